@@ -1,0 +1,45 @@
+#include "app/cli.h"
+
+#include "app/info_command.h"
+#include "core/error.h"
+#include "core/log.h"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+
+namespace glint {
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"glint: hybrid screen-space + ray-traced reflections for walkthroughs of static and deformable scenes",
+               "glint"};
+  app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION);
+  app.require_subcommand(1);
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "Print progress and diagnostic details to stderr");
+
+  InfoOptions info;
+  add_info_command(app, info);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  if (verbose) set_log_level(LogLevel::info);
+
+  try {
+    if (app.got_subcommand("info")) return run_info_command(info);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "glint: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "glint: internal error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace glint
