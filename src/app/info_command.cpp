@@ -3,8 +3,97 @@
 #include "scene/load_scene.h"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
 
 namespace glint {
+namespace {
+
+std::string vec_text(const vec3& v) { return fmt::format("({:.2f}, {:.2f}, {:.2f})", v.x, v.y, v.z); }
+nlohmann::json vec_json(const vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+const char* axis_name(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
+
+// Thousands separators make 618000 vs 61800 readable at a glance.
+std::string count_text(std::size_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+nlohmann::json scene_json(const Scene& scene) {
+  nlohmann::json j;
+  j["name"] = scene.name;
+  j["source"] = scene.source;
+  j["vertices"] = scene.vertex_count();
+  j["triangles"] = scene.triangle_count();
+  const Aabb bounds = scene.world_bounds();
+  j["bounds"] = {{"min", vec_json(bounds.min)}, {"max", vec_json(bounds.max)}};
+  for (const Mesh& mesh : scene.meshes) {
+    nlohmann::json m = {{"name", mesh.name}, {"vertices", mesh.vertex_count()}, {"triangles", mesh.triangle_count()},
+                        {"material", scene.materials[mesh.material].name}, {"deformable", mesh.deformable}};
+    if (mesh.deform)
+      m["deform"] = {{"type", "sine"}, {"axis", axis_name(mesh.deform->displace_axis)},
+                     {"along", axis_name(mesh.deform->wave_axis)}, {"amplitude", mesh.deform->amplitude},
+                     {"frequency", mesh.deform->frequency}, {"speed", mesh.deform->speed}};
+    j["meshes"].push_back(m);
+  }
+  for (const Instance& instance : scene.instances)
+    j["instances"].push_back({{"name", instance.name}, {"mesh", scene.meshes[instance.mesh].name}});
+  for (const Material& material : scene.materials) {
+    nlohmann::json m = {{"name", material.name}, {"diffuse", vec_json(material.diffuse)},
+                        {"reflectivity", material.reflectivity}, {"specular_exponent", material.specular_exponent}};
+    if (material.diffuse_texture >= 0) m["texture"] = scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name;
+    j["materials"].push_back(m);
+  }
+  for (const Texture& texture : scene.textures)
+    j["textures"].push_back({{"name", texture.name}, {"width", texture.width}, {"height", texture.height},
+                             {"placeholder", texture.placeholder}});
+  j["light"] = {{"position", vec_json(scene.light.position)}, {"color", vec_json(scene.light.color)},
+                {"intensity", scene.light.intensity}, {"range", scene.light.range}};
+  j["walkthrough"] = {{"frames", scene.walkthrough.frame_count},
+                      {"fps", scene.walkthrough.frames_per_second},
+                      {"camera_points", scene.walkthrough.camera.points.size()},
+                      {"light_points", scene.walkthrough.light.points.size()}};
+  return j;
+}
+
+void print_text(const Scene& scene) {
+  const Aabb bounds = scene.world_bounds();
+  fmt::print("scene       {} ({})\n", scene.name, scene.source);
+  fmt::print("vertices    {}\n", count_text(scene.vertex_count()));
+  fmt::print("triangles   {}\n", count_text(scene.triangle_count()));
+  fmt::print("bounds      min {} max {} size {}\n", vec_text(bounds.min), vec_text(bounds.max), vec_text(bounds.extent()));
+  fmt::print("meshes      {} ({} instances)\n", scene.meshes.size(), scene.instances.size());
+  for (const Mesh& mesh : scene.meshes)
+    fmt::print("  {:<32} {:>9} vertices {:>9} triangles  {}{}\n", mesh.name, count_text(mesh.vertex_count()),
+               count_text(mesh.triangle_count()), scene.materials[mesh.material].name, mesh.deformable ? "  [deformable]" : "");
+  const auto deformable = scene.deformable_meshes();
+  fmt::print("deformable  {}\n", deformable.empty() ? "none" : std::to_string(deformable.size()) + " meshes");
+  for (std::uint32_t index : deformable) {
+    const Mesh& mesh = scene.meshes[index];
+    fmt::print("  {:<32} sine: {} += {:.3f} * sin({:.2f} * {} + {:.2f} * t)\n", mesh.name, axis_name(mesh.deform->displace_axis),
+               mesh.deform->amplitude, mesh.deform->frequency, axis_name(mesh.deform->wave_axis), mesh.deform->speed);
+  }
+  fmt::print("materials   {}\n", scene.materials.size());
+  for (const Material& material : scene.materials)
+    fmt::print("  {:<32} diffuse {}  reflectivity {:.2f}  shininess {:.0f}{}\n", material.name, vec_text(material.diffuse),
+               material.reflectivity, material.specular_exponent,
+               material.diffuse_texture >= 0 ? "  texture " + scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name : "");
+  fmt::print("textures    {}\n", scene.textures.size());
+  for (const Texture& texture : scene.textures)
+    fmt::print("  {:<48} {}x{}{}\n", texture.name, texture.width, texture.height, texture.placeholder ? "  (missing: checker)" : "");
+  fmt::print("light       at {}  colour {}  intensity {:.1f}  range {:.1f}\n", vec_text(scene.light.position),
+             vec_text(scene.light.color), scene.light.intensity, scene.light.range);
+  fmt::print("walkthrough {} frames at {:.0f} fps, camera path {} control points, light path {} points\n",
+             scene.walkthrough.frame_count, scene.walkthrough.frames_per_second, scene.walkthrough.camera.points.size(),
+             scene.walkthrough.light.points.size());
+}
+
+}  // namespace
 
 void add_info_command(CLI::App& app, InfoOptions& options) {
   CLI::App* info = app.add_subcommand("info", "Describe a scene: meshes, counts, deformables, bounds, materials, light, paths");
@@ -18,9 +107,10 @@ int run_info_command(const InfoOptions& options) {
   LoadOptions load;
   load.flat_normals = options.flat_normals;
   const Scene scene = load_scene(options.scene, load);
-  fmt::print("scene      {} ({})\n", scene.name, scene.source);
-  fmt::print("meshes     {}  instances {}\n", scene.meshes.size(), scene.instances.size());
-  fmt::print("vertices   {}\ntriangles  {}\n", scene.vertex_count(), scene.triangle_count());
+  if (options.json)
+    fmt::print("{}\n", scene_json(scene).dump(2));
+  else
+    print_text(scene);
   return 0;
 }
 

@@ -1,0 +1,47 @@
+#pragma once
+// Runs the built glint executable as a user would and captures its exit code, stdout and stderr.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace glint::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// `arguments` is appended to the command line as is (quote paths yourself).
+inline CliResult run_glint(const std::string& arguments) {
+  const auto dir = std::filesystem::temp_directory_path() / ("glint_cli_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command = std::string("\"") + GLINT_CLI_PATH + "\" " + arguments + " >\"" + out.string() + "\" 2>\"" +
+                              err.string() + "\"";
+  const int status = std::system(command.c_str());
+  CliResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text_file(out);
+  result.err = read_text_file(err);
+  std::filesystem::remove_all(dir);
+  return result;
+}
+
+inline int line_count(const std::string& text) {
+  int lines = 0;
+  for (char c : text) lines += c == '\n';
+  return lines;
+}
+
+}  // namespace glint::testing
