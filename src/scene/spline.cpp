@@ -161,8 +161,8 @@ void CatmullRomSpline::locate(double s, std::size_t& segment, double& u) const {
     else
       lo = u;
     const double derivative = seg.speed(u);
-    double candidate = derivative > 0.0 ? u - f / derivative : lo - 1.0;
-    if (!(candidate > lo && candidate < hi)) candidate = 0.5 * (lo + hi);
+    const double newton = derivative > 0.0 ? u - f / derivative : lo;  // lo: rejected just below
+    const double candidate = (newton > lo && newton < hi) ? newton : 0.5 * (lo + hi);
     if (candidate == u) break;
     u = candidate;
   }
@@ -181,8 +181,7 @@ glm::dvec3 CatmullRomSpline::tangent_at_distance_d(double s) const {
   std::size_t segment = 0;
   double u = 0.0;
   if (!(s > 0.0)) {
-    segment = 0;
-    u = 0.0;
+    // The start: segment 0 at u = 0, as initialized.
   } else if (s >= total_length_) {
     segment = segments_.size() - 1;
     u = 1.0;
