@@ -1,0 +1,109 @@
+#include "scene/sine_deformer.h"
+
+#include "core/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+namespace glint {
+namespace {
+
+// Vertices (or triangles) per TBB task: small meshes run as one task, so they pay no scheduling cost.
+constexpr std::size_t kGrain = 4096;
+
+template <typename Body>
+void parallel_range(std::size_t count, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+  });
+}
+
+}  // namespace
+
+SineDeformer::SineDeformer(const Mesh& rest_mesh, SineDeform parameters)
+    : mesh_name_(rest_mesh.name), parameters_(parameters), rest_positions_(rest_mesh.positions),
+      indices_(rest_mesh.indices) {
+  const SineDeform& p = parameters_;
+  if (p.displace_axis < 0 || p.displace_axis > 2)
+    fail("mesh '{}': sine deform displace_axis must be 0, 1 or 2, got {}", mesh_name_, p.displace_axis);
+  if (p.wave_axis < 0 || p.wave_axis > 2)
+    fail("mesh '{}': sine deform wave_axis must be 0, 1 or 2, got {}", mesh_name_, p.wave_axis);
+  if (!std::isfinite(p.amplitude) || !std::isfinite(p.frequency) || !std::isfinite(p.speed))
+    fail("mesh '{}': sine deform amplitude, frequency and speed must be finite", mesh_name_);
+  if (indices_.size() % 3 != 0)
+    fail("mesh '{}': {} indices is not a whole number of triangles", mesh_name_, indices_.size());
+  const std::size_t vertex_count = rest_positions_.size();
+  for (std::size_t i = 0; i < indices_.size(); ++i)
+    if (indices_[i] >= vertex_count)
+      fail("mesh '{}': index {} is {}, past the {} vertices", mesh_name_, i, indices_[i], vertex_count);
+
+  // Counting sort of (vertex, triangle) pairs by vertex; triangles are visited in ascending order,
+  // so each vertex's list comes out ascending.
+  vertex_offsets_.assign(vertex_count + 1, 0);
+  for (const std::uint32_t v : indices_) ++vertex_offsets_[v + 1];
+  for (std::size_t v = 0; v < vertex_count; ++v) vertex_offsets_[v + 1] += vertex_offsets_[v];
+  vertex_triangles_.resize(indices_.size());
+  std::vector<std::size_t> cursor(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
+  for (std::size_t corner = 0; corner < indices_.size(); ++corner)
+    vertex_triangles_[cursor[indices_[corner]]++] = static_cast<std::uint32_t>(corner / 3);
+}
+
+void SineDeformer::apply(Mesh& mesh, float time_seconds) const {
+  if (mesh.positions.size() != rest_positions_.size())
+    fail("mesh '{}': the sine deformer was built for {} vertices, the mesh has {}", mesh_name_,
+         rest_positions_.size(), mesh.positions.size());
+  if (mesh.indices.size() != indices_.size())
+    fail("mesh '{}': the sine deformer was built for {} triangles, the mesh has {}", mesh_name_,
+         indices_.size() / 3, mesh.indices.size() / 3);
+
+  const SineDeform& p = parameters_;
+  const float phase = p.speed * time_seconds;
+  parallel_range(rest_positions_.size(), [&](std::size_t v) {
+    const vec3& rest = rest_positions_[v];
+    vec3 moved = rest;
+    moved[p.displace_axis] = rest[p.displace_axis] + p.amplitude * std::sin(p.frequency * rest[p.wave_axis] + phase);
+    mesh.positions[v] = moved;
+  });
+
+  // Smooth normals as compute_smooth_normals makes them (area-weighted face sum, +y where it
+  // vanishes), but gathered per vertex so both loops run in parallel without races.
+  std::vector<vec3> face_normals(indices_.size() / 3);
+  parallel_range(face_normals.size(), [&](std::size_t t) {
+    const vec3 a = mesh.positions[indices_[3 * t]], b = mesh.positions[indices_[3 * t + 1]],
+               c = mesh.positions[indices_[3 * t + 2]];
+    face_normals[t] = glm::cross(b - a, c - a);  // length = twice the area: the weight
+  });
+  mesh.normals.resize(rest_positions_.size());
+  parallel_range(rest_positions_.size(), [&](std::size_t v) {
+    vec3 sum(0.0f);
+    for (std::size_t k = vertex_offsets_[v]; k < vertex_offsets_[v + 1]; ++k) sum += face_normals[vertex_triangles_[k]];
+    const float length = glm::length(sum);
+    mesh.normals[v] = (length > 0.0f && std::isfinite(length)) ? sum / length : vec3(0.0f, 1.0f, 0.0f);
+  });
+}
+
+SceneDeformers::SceneDeformers(const Scene& scene)
+    : scene_mesh_count_(scene.meshes.size()), frames_per_second_(scene.walkthrough.frames_per_second) {
+  if (!(frames_per_second_ > 0.0f) || !std::isfinite(frames_per_second_))
+    fail("{}: walkthrough frames_per_second must be a finite number > 0, got {}", scene.source, frames_per_second_);
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    if (!mesh.deformable || !mesh.deform) continue;
+    deformers_.emplace_back(mesh, *mesh.deform);
+    mesh_indices_.push_back(static_cast<std::uint32_t>(m));
+  }
+}
+
+std::vector<std::uint32_t> SceneDeformers::apply(Scene& scene, int frame) const {
+  if (frame < 0) fail("deformers: frame must be >= 0, got {}", frame);
+  if (scene.meshes.size() != scene_mesh_count_)
+    fail("deformers: built for a scene with {} meshes, given one with {}", scene_mesh_count_, scene.meshes.size());
+  // The same conversion as WalkthroughAnimation::at, so geometry and FrameState agree on the time.
+  const float time_seconds = static_cast<float>(double(frame) / double(frames_per_second_));
+  for (std::size_t k = 0; k < deformers_.size(); ++k) deformers_[k].apply(scene.meshes[mesh_indices_[k]], time_seconds);
+  return mesh_indices_;
+}
+
+}  // namespace glint
