@@ -1,5 +1,6 @@
 #include "app/info_command.h"
 
+#include "scene/camera_path.h"
 #include "scene/load_scene.h"
 
 #include <fmt/format.h>
@@ -54,10 +55,14 @@ nlohmann::json scene_json(const Scene& scene) {
                              {"placeholder", texture.placeholder}});
   j["light"] = {{"position", vec_json(scene.light.position)}, {"color", vec_json(scene.light.color)},
                 {"intensity", scene.light.intensity}, {"range", scene.light.range}};
+  const WalkthroughAnimation animation(scene);
   j["walkthrough"] = {{"frames", scene.walkthrough.frame_count},
                       {"fps", scene.walkthrough.frames_per_second},
                       {"camera_points", scene.walkthrough.camera.points.size()},
-                      {"light_points", scene.walkthrough.light.points.size()}};
+                      {"camera_path_length", animation.camera_path_length()},
+                      {"light_points", scene.walkthrough.light.points.size()},
+                      {"light_path_length", animation.light_path_length()},
+                      {"light_period_frames", scene.walkthrough.light.period_frames}};
   return j;
 }
 
@@ -88,9 +93,15 @@ void print_text(const Scene& scene) {
     fmt::print("  {:<48} {}x{}{}\n", texture.name, texture.width, texture.height, texture.placeholder ? "  (missing: checker)" : "");
   fmt::print("light       at {}  colour {}  intensity {:.1f}  range {:.1f}\n", vec_text(scene.light.position),
              vec_text(scene.light.color), scene.light.intensity, scene.light.range);
-  fmt::print("walkthrough {} frames at {:.0f} fps, camera path {} control points, light path {} points\n",
-             scene.walkthrough.frame_count, scene.walkthrough.frames_per_second, scene.walkthrough.camera.points.size(),
-             scene.walkthrough.light.points.size());
+  const WalkthroughAnimation animation(scene);
+  const Walkthrough& walk = scene.walkthrough;
+  fmt::print("walkthrough {} frames at {:.0f} fps ({:.1f} s)\n", walk.frame_count, walk.frames_per_second,
+             static_cast<float>(walk.frame_count) / walk.frames_per_second);
+  fmt::print("  camera    {} control points, path length {:.1f} m, {:.3f} m per frame, fov {:.0f} deg\n",
+             walk.camera.points.size(), animation.camera_path_length(), animation.camera_speed_per_frame(),
+             walk.camera.fov_y_degrees);
+  fmt::print("  light     {} points, path length {:.1f} m, there and back every {} frames\n", walk.light.points.size(),
+             animation.light_path_length(), walk.light.period_frames);
 }
 
 }  // namespace

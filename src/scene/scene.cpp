@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "core/error.h"
+#include "scene/camera_path.h"
 
 #include <cmath>
 
@@ -69,6 +70,11 @@ void Scene::validate() const {
   for (const Instance& instance : instances)
     if (instance.mesh >= meshes.size())
       fail("{}: instance '{}': mesh {} out of range ({} meshes)", source, instance.name, instance.mesh, meshes.size());
+  try {
+    const WalkthroughAnimation paths(*this);  // checks the camera and light paths can be animated
+  } catch (const Error& e) {
+    fail("{}: {}", source, e.what());
+  }
 }
 
 }  // namespace glint
