@@ -45,10 +45,11 @@ void warn_about_undefined_materials(const ObjMaterialLibrary& library, const Obj
   if (undefined.empty()) return;
   if (a_library_is_missing) {
     // The missing library is the cause: one warning rather than one per material name.
-    log_warning("{}:{}: {} material name{} ('{}'{}) not defined because a material library is missing; "
-                "their faces use the default material",
-                obj_label, undefined.front()->line, undefined.size(), undefined.size() == 1 ? " is" : "s are",
-                undefined.front()->name, undefined.size() > 1 ? ", ..." : "");
+    log_warning("{}:{}: {} material name{} ('{}'{}) {} not defined because a material library is missing; "
+                "{} faces use the default material",
+                obj_label, undefined.front()->line, undefined.size(), undefined.size() == 1 ? "" : "s",
+                undefined.front()->name, undefined.size() > 1 ? ", ..." : "", undefined.size() == 1 ? "is" : "are",
+                undefined.size() == 1 ? "its" : "their");
     return;
   }
   for (const ObjLineReference* use : undefined)
