@@ -58,8 +58,12 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   config.triangulate = true;
   config.vertex_color = false;  // glint has no vertex colours; skip filling them
   tinyobj::ObjReader reader;
+  // tinyobjloader reads materials when it meets `mtllib`, and a `usemtl` above that line would find
+  // nothing; our library is already complete, so announce it on a first line of its own. (Later
+  // `mtllib` lines then find the stream used up, which tinyobjloader only notes as a warning.)
+  const std::string tinyobj_text = library.materials.empty() ? std::string() : "mtllib glint-materials\n" + text;
   // The validation pass has rejected everything tinyobjloader is known to fail on; this is a backstop.
-  if (!reader.ParseFromString(text, names_as_mtl_text(library), config))
+  if (!reader.ParseFromString(tinyobj_text.empty() ? text : tinyobj_text, names_as_mtl_text(library), config))
     fail("{}: {}", file_label, reader.Error().empty() ? "tinyobjloader could not parse the file" : reader.Error());
   if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, reader.Warning());
 

@@ -112,6 +112,8 @@ void ObjTextValidator::check_vertex_reference(std::string_view reference) {
   }
   if (parts[0].empty()) fail_here("'{}' has no position index", reference);
   check_index(parts[0], summary_.position_count, "position", reference);
+  // The middle index may be empty only in "v//vn"; tinyobjloader would fail on "v/" without a line.
+  if (part_count == 2 && parts[1].empty()) fail_here("'{}' has an empty texture coordinate index", reference);
   if (part_count >= 2 && !parts[1].empty()) check_index(parts[1], summary_.texcoord_count, "texture coordinate", reference);
   if (part_count == 3) {
     if (parts[2].empty()) fail_here("'{}' has an empty normal index", reference);

@@ -319,6 +319,31 @@ TEST(ObjLoader, MissingMtlIsAWarningAndTheDefaultMaterial) {
   EXPECT_EQ(capture.count_warnings("absent.mtl"), 1);
 }
 
+TEST(ObjLoader, MtllibLineCanNameSeveralLibraries) {
+  TempFolder folder;
+  folder.write("a.mtl", "newmtl from_a\nKd 1 0 0\n");
+  folder.write("B.MTL", "newmtl from_b\nKd 0 1 0\n");  // named "b.mtl" in the OBJ: found ignoring case
+  const std::filesystem::path obj = folder.write(
+      "scene.obj", "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl from_a\nf 1 2 3\nusemtl from_b\nf 1 3 2\n");
+  ScopedLogCapture capture;
+  const Scene scene = load_obj(obj);
+  EXPECT_EQ(capture.count_warnings(""), 0);
+  EXPECT_EQ(material_named(scene, "from_a").diffuse, vec3(1, 0, 0));
+  EXPECT_EQ(material_named(scene, "from_b").diffuse, vec3(0, 1, 0));
+}
+
+TEST(ObjLoader, UsemtlAboveTheMtllibLineStillFindsItsMaterial) {
+  TempFolder folder;
+  folder.write("late.mtl", "newmtl wall\nKd 0 0 1\n");
+  const std::filesystem::path obj =
+      folder.write("late.obj", "usemtl wall\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nmtllib late.mtl\n");
+  ScopedLogCapture capture;
+  const Scene scene = load_obj(obj);
+  ASSERT_EQ(scene.materials.size(), 1u);
+  EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "wall");
+  EXPECT_EQ(capture.count_warnings(""), 0);
+}
+
 TEST(ObjLoader, UnknownMaterialNameIsAWarningAndTheDefaultMaterial) {
   TempFolder folder;
   folder.write("scene.mtl", "newmtl known\nKd 0 0 1\n");
@@ -419,6 +444,10 @@ INSTANTIATE_TEST_SUITE_P(
                    "texture coordinate 2 is out of range"},
         BadObjCase{"NormalIndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//7\n", 5,
                    "normal 7 is out of range"},
+        BadObjCase{"EmptyTexcoordIndex", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/ 3/1\n", 5,
+                   "empty texture coordinate index"},
+        BadObjCase{"TooManySlashes", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3/1/1/1\n", 4, "not a vertex reference"},
+        BadObjCase{"UsemtlWithoutName", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl\nf 1 2 3\n", 4, "needs a material name"},
         BadObjCase{"NonNumericFaceIndex", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 three\n", 4, "not an integer index"},
         BadObjCase{"FaceWithTwoVertices", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n", 5, "at least 3"},
         BadObjCase{"FaceWithNoVertices", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf\n", 4, "at least 3"},
