@@ -3,6 +3,7 @@
 //   2 obj_materials      the MTL libraries (mtl_reader), with warnings for missing files and names
 //   3 tinyobjloader      parsing and triangulation
 //   4 obj_mesh_assembly  meshes per (object, material), then degenerate removal and normals here
+// How MTL statements map onto glint::Material is documented in mtl_reader.h.
 #include "scene/obj_loader.h"
 
 #include "core/error.h"
@@ -61,9 +62,9 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   // tinyobjloader reads materials when it meets `mtllib`, and a `usemtl` above that line would find
   // nothing; our library is already complete, so announce it on a first line of its own. (Later
   // `mtllib` lines then find the stream used up, which tinyobjloader only notes as a warning.)
-  const std::string tinyobj_text = library.materials.empty() ? std::string() : "mtllib glint-materials\n" + text;
+  const std::string tinyobj_text = library.materials.empty() ? text : "mtllib glint-materials\n" + text;
   // The validation pass has rejected everything tinyobjloader is known to fail on; this is a backstop.
-  if (!reader.ParseFromString(tinyobj_text.empty() ? text : tinyobj_text, names_as_mtl_text(library), config))
+  if (!reader.ParseFromString(tinyobj_text, names_as_mtl_text(library), config))
     fail("{}: {}", file_label, reader.Error().empty() ? "tinyobjloader could not parse the file" : reader.Error());
   if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, reader.Warning());
 
