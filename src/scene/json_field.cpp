@@ -152,6 +152,19 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& file_la
     const std::size_t colon = column == std::string::npos ? std::string::npos : what.find(": ", column);
     if (colon != std::string::npos) what = what.substr(colon + 2);
     fail("{}:{}:{}: malformed JSON: {}", file_label, at.line, at.column, what);
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number too large for a double ("number overflow parsing '1e999'") carries no position; find
+    // the quoted literal in the text instead.
+    std::string what = e.what();
+    const std::size_t bracket = what.find("] ");
+    if (bracket != std::string::npos) what = what.substr(bracket + 2);
+    const std::size_t open = what.find('\'');
+    const std::size_t close = open == std::string::npos ? std::string::npos : what.find('\'', open + 1);
+    const std::size_t at = close == std::string::npos ? std::string_view::npos
+                                                      : text.find(what.substr(open + 1, close - open - 1));
+    if (at == std::string_view::npos) fail("{}: malformed JSON: {}", file_label, what);
+    const TextPosition position = text_position(text, at);
+    fail("{}:{}:{}: malformed JSON: {}", file_label, position.line, position.column, what);
   } catch (const nlohmann::json::exception& e) {
     fail("{}: malformed JSON: {}", file_label, e.what());
   }
