@@ -38,7 +38,9 @@ std::filesystem::path find_assets_dir(const LoadOptions& options,
   if (env != nullptr && *env != '\0') candidates.push_back({"$GLINT_ASSETS", env});
   else not_set.push_back("$GLINT_ASSETS is not set");
   if (scene_assets) candidates.push_back({"the scene's \"assets\" entry", *scene_assets});
-  candidates.push_back({"the current directory", std::filesystem::path("..") / "shared" / "assets"});
+  std::error_code no_cwd;
+  const std::filesystem::path cwd = std::filesystem::current_path(no_cwd);
+  candidates.push_back({"the current directory", (no_cwd ? std::filesystem::path(".") : cwd) / ".." / "shared" / "assets"});
   if (const std::filesystem::path exe = executable_folder(); !exe.empty()) {
     candidates.push_back({"the executable's folder", exe / ".." / "shared" / "assets"});
     candidates.push_back({"the executable's folder", exe / ".." / ".." / "shared" / "assets"});
