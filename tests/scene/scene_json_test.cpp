@@ -500,3 +500,29 @@ TEST(SceneJsonExample, SponzaSceneFileParsesIntoTheExpectedDescription) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST(SceneJsonExample, TheDocumentationsCompleteExampleParses) {
+  const std::filesystem::path doc = std::filesystem::path(GLINT_SOURCE_DIR) / "docs" / "scene-format.md";
+  std::ifstream in(doc);
+  ASSERT_TRUE(in) << doc;
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string markdown = text.str();
+  const std::size_t start = markdown.find("```json\n");
+  ASSERT_NE(start, std::string::npos);
+  const std::size_t end = markdown.find("```", start + 8);
+  ASSERT_NE(end, std::string::npos);
+  const SceneDescription description =
+      parse_scene_description(markdown.substr(start + 8, end - start - 8), "gallery.scene.json");
+  EXPECT_EQ(description.name, "gallery");
+  EXPECT_EQ(description.meshes.size(), 3u);
+  EXPECT_TRUE(description.meshes[2].deform.has_value());
+  EXPECT_TRUE(description.meshes[1].material.reflectivity.has_value());
+  EXPECT_EQ(description.frames, 600);
+}
+
+}  // namespace
+}  // namespace glint
