@@ -6,8 +6,9 @@ namespace glint {
 
 struct LoadOptions {
   bool flat_normals = false;  // for meshes without normals: flat (per face) instead of smooth
-  // Where scene files' "assets"-relative paths resolve; unset: the scene file's own "assets" entry,
-  // then $GLINT_ASSETS, then ../shared/assets (see find_assets_dir).
+  // Where scene files' "assets"-relative paths resolve (only scenes with an "assets" entry have them);
+  // it overrides $GLINT_ASSETS, which overrides the scene's "assets"; then ../shared/assets (see
+  // find_assets_dir in scene/assets_dir.h). A folder that does not exist is skipped.
   std::optional<std::filesystem::path> assets_dir;
 };
 

@@ -1,0 +1,30 @@
+#pragma once
+// glTF metallic-roughness materials and images -> glint's Blinn-Phong + mirror materials and RGBA8
+// textures. Internal to the scene module (it exposes tinygltf types). The mapping, documented in
+// docs/scene-format.md ("glTF files"):
+//   diffuse            = baseColorFactor.rgb (times baseColorTexture)
+//   reflectivity       = metallicFactor * (1 - roughnessFactor): only smooth metals mirror
+//   specular           = mix(0.04, diffuse, metallicFactor): the usual F0 of dielectrics and metals
+//   specular_exponent  = specular_exponent_from_roughness(roughnessFactor)
+//   roughness          = roughnessFactor; emissive = emissiveFactor
+#include "scene/scene.h"
+
+#include <tiny_gltf.h>
+
+#include <string>
+
+namespace glint {
+
+// Blinn-Phong exponent with about the highlight width of a GGX lobe of this roughness: with
+// alpha = roughness^2, n = 2 / alpha^2 - 2 (Walter et al. 2007), clamped to 1..2048 (roughness 0.5
+// gives 30, near glint's default of 32).
+float specular_exponent_from_roughness(float roughness);
+
+// The material without its texture (diffuse_texture stays -1; the loader links textures).
+Material convert_gltf_material(const tinygltf::Material& material, int index);
+
+// An image tinygltf decoded (any of 1-4 channels, 8 or 16 bits) as 8-bit RGBA, top row first. Throws
+// a glint::Error (prefixed with `where`) when the image has no pixels, e.g. a missing external file.
+Texture convert_gltf_image(const tinygltf::Image& image, const std::string& name, const std::string& where);
+
+}  // namespace glint
