@@ -4,7 +4,7 @@
 #include "core/log.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_test_builder.h"
-#include "scene/scratch_folder.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@ namespace glint {
 namespace {
 
 using testing::GltfBuilder;
-using testing::ScratchFolder;
+using testing::TempFolder;
 using nlohmann::json;
 
 vec3 world_position(const Scene& scene, const Instance& instance, std::size_t vertex) {
@@ -47,7 +47,7 @@ TEST(GltfLoader, ComposesNodeHierarchyTransformsParentTimesChild) {
   gltf.json["nodes"].push_back({{"translation", {10, 0, 0}}, {"children", {child}}});
   // Node 2: the same mesh through a column-major "matrix" (translate (0, 5, 0)).
   gltf.json["nodes"].push_back({{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 5, 0, 1}}});
-  ScratchFolder folder;
+  TempFolder folder;
   const Scene scene = load_gltf(folder.write("hierarchy.gltf", gltf.gltf_text()));
 
   ASSERT_EQ(scene.meshes.size(), 1u);  // one mesh, two nodes use it
@@ -74,7 +74,7 @@ TEST(GltfLoader, EachTrianglePrimitiveBecomesAMeshAndNormalsAreComputedWhenAbsen
                                   {{{"attributes", {{"POSITION", positions}}}},
                                    {{"attributes", {{"POSITION", quad}}}, {"indices", quad_indices}}}}});
   gltf.json["nodes"].push_back({{"mesh", 0}, {"name", "thing"}});
-  ScratchFolder folder;
+  TempFolder folder;
   const Scene scene = load_gltf(folder.write("pair.gltf", gltf.gltf_text()));
 
   ASSERT_EQ(scene.meshes.size(), 2u);
@@ -101,7 +101,7 @@ TEST(GltfLoader, ReadsIndicesOfEveryComponentTypeAndNoneAsSequential) {
   const int three = gltf.add_vec3(testing::unit_triangle());
   for (int indices : {u8, u16, u32}) gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
   gltf.add_mesh_node({{"attributes", {{"POSITION", three}}}});
-  ScratchFolder folder;
+  TempFolder folder;
   const Scene scene = load_gltf(folder.write("indices.gltf", gltf.gltf_text()));
   ASSERT_EQ(scene.meshes.size(), 4u);
   for (int m = 0; m < 3; ++m) EXPECT_EQ(scene.meshes[static_cast<std::size_t>(m)].indices, (std::vector<std::uint32_t>{0, 1, 3}));
@@ -114,7 +114,7 @@ TEST(GltfLoader, ConvertsTriangleStripsAndSkipsPointsWithOneWarning) {
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"mode", 5}});  // strip: 2 triangles
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"mode", 0}});  // points
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"mode", 1}});  // lines
-  ScratchFolder folder;
+  TempFolder folder;
   ScopedLogCapture log;
   const Scene scene = load_gltf(folder.write("strip.gltf", gltf.gltf_text()));
   ASSERT_EQ(scene.meshes.size(), 1u);
@@ -135,7 +135,7 @@ TEST(GltfLoader, MapsMetallicRoughnessMaterials) {
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"material", 0}});
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"material", 1}});
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}});  // glTF's default material
-  ScratchFolder folder;
+  TempFolder folder;
   const Scene scene = load_gltf(folder.write("materials.gltf", gltf.gltf_text()));
   ASSERT_EQ(scene.materials.size(), 3u);
   const Material& chrome = scene.materials[scene.meshes[0].material];
@@ -173,7 +173,7 @@ TEST(GltfLoader, DecodesEmbeddedBaseColorTextureTopRowFirstAndFlipsV) {
   const int positions = gltf.add_vec3(testing::unit_triangle());
   const int uvs = gltf.add_vec2({0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.75f});
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
-  ScratchFolder folder;
+  TempFolder folder;
   const Scene scene = load_gltf(folder.write("textured.gltf", gltf.gltf_text()));
   ASSERT_EQ(scene.textures.size(), 1u);
   const Texture& texture = scene.textures[0];
@@ -194,7 +194,7 @@ TEST(GltfLoader, MissingExternalImageLeavesTheMaterialUntexturedWithAWarning) {
   gltf.json["textures"].push_back({{"source", 0}});
   gltf.json["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
   gltf.add_mesh_node({{"attributes", {{"POSITION", gltf.add_vec3(testing::unit_triangle())}}}, {"material", 0}});
-  ScratchFolder folder;
+  TempFolder folder;
   ScopedLogCapture log;
   const Scene scene = load_gltf(folder.write("lost.gltf", gltf.gltf_text()));
   EXPECT_TRUE(scene.textures.empty());
@@ -207,7 +207,7 @@ TEST(GltfLoader, LoadsGlbAndExternalBinLikeEmbeddedGltf) {
   const int positions = gltf.add_vec3({0, 0, 0, 2, 0, 0, 0, 3, 0});
   const int normals = gltf.add_vec3({0, 0, 2, 0, 0, 1, 0, 0, 1});  // not unit: normalized on load
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}, {"NORMAL", normals}}}}, {{"translation", {0, 0, 7}}});
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("model.bin", gltf.bin());
   for (const std::filesystem::path& file : {folder.write("model.glb", gltf.glb()),
                                             folder.write("split.gltf", gltf.gltf_text_with_bin("model.bin")),
@@ -227,7 +227,7 @@ TEST(GltfLoader, UsesTheDefaultSceneElseAllRootNodes) {
   const int positions = gltf.add_vec3(testing::unit_triangle());
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}});
   gltf.json["nodes"].push_back({{"mesh", 0}, {"translation", {0, 9, 0}}});
-  ScratchFolder folder;
+  TempFolder folder;
   EXPECT_EQ(load_gltf(folder.write("roots.gltf", gltf.gltf_text())).instances.size(), 2u);
   gltf.json["scenes"] = json::array({{{"nodes", {1}}}});
   gltf.json["scene"] = 0;
@@ -241,7 +241,7 @@ TEST(GltfLoader, DropsDegenerateTrianglesWithOneWarningGivingTheCount) {
   const int positions = gltf.add_vec3({0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 0, 0});
   const int indices = gltf.add_indices_u16({0, 1, 2, 0, 0, 1, 0, 1, 3});  // 2nd repeats a vertex, 3rd is collinear
   gltf.add_mesh_node({{"attributes", {{"POSITION", positions}}}, {"indices", indices}});
-  ScratchFolder folder;
+  TempFolder folder;
   ScopedLogCapture log;
   const Scene scene = load_gltf(folder.write("thin.gltf", gltf.gltf_text()));
   EXPECT_EQ(scene.triangle_count(), 1u);
@@ -249,7 +249,7 @@ TEST(GltfLoader, DropsDegenerateTrianglesWithOneWarningGivingTheCount) {
 }
 
 TEST(GltfLoader, ErrorsNameTheFileAndTheGltfLocation) {
-  ScratchFolder folder;
+  TempFolder folder;
   expect_error(folder.path() / "absent.gltf", {"absent.gltf", "no such file"});
   expect_error(folder.write("broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [ }"),
                {"broken.gltf", "malformed glTF"});

@@ -9,7 +9,7 @@
 #include "scene/load_scene.h"
 #include "scene/scene_json_builder.h"
 #include "scene/scene_json_parser.h"
-#include "scene/scratch_folder.h"
+#include "support/temp_folder.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ namespace glint {
 namespace {
 
 using testing::GltfBuilder;
-using testing::ScratchFolder;
+using testing::TempFolder;
 using nlohmann::json;
 
 // A one-triangle glTF (vertices (0,0,0), (1,0,0), (0,1,0)) whose material is called `material`, plus a
@@ -219,7 +219,7 @@ TEST(SceneJsonParse, RejectsBadValuesWithTheirJsonPath) {
 // ---- building (glTF files on disk) ----
 
 TEST(SceneJson, PlacesEntriesAppliesOverridesDeformAndFloor) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("models/tri.gltf", triangle_gltf("ground"));
   const Scene scene = load_scene_json_text(R"({
     "meshes": [
@@ -254,7 +254,7 @@ TEST(SceneJson, PlacesEntriesAppliesOverridesDeformAndFloor) {
 }
 
 TEST(SceneJson, LoadsEachFileOnceAndSharesStaticMeshesButNotDeformableOnes) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("tri.gltf", triangle_gltf("stone"));
   ScopedLogCapture log;  // each load of tri.gltf warns once about its degenerate triangle
   const Scene scene = load_scene_json_text(R"({"meshes": [
@@ -276,7 +276,7 @@ TEST(SceneJson, LoadsEachFileOnceAndSharesStaticMeshesButNotDeformableOnes) {
 }
 
 TEST(SceneJson, LightCameraFramesAndDefaultWalkthrough) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("tri.gltf", triangle_gltf("m"));
   const Scene plain = load_scene_json_text(R"({"meshes": [{"file": "tri.gltf"}]})", folder.path() / "a.scene.json");
   EXPECT_EQ(plain.walkthrough.frame_count, 4900);
@@ -307,7 +307,7 @@ TEST(SceneJson, LightCameraFramesAndDefaultWalkthrough) {
 }
 
 TEST(SceneJson, BuildErrorsNameTheFileAndJsonPath) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("tri.gltf", triangle_gltf("stone"));
   const std::filesystem::path origin = folder.path() / "bad.scene.json";
 
@@ -345,7 +345,7 @@ TEST(SceneJson, BuildErrorsNameTheFileAndJsonPath) {
 }
 
 TEST(SceneJson, LoadsFromAFileAndThroughLoadScene) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("tri.gltf", triangle_gltf("m"));
   const std::filesystem::path file = folder.write("room.scene.json", R"({"meshes": [{"file": "tri.gltf"}]})");
   EXPECT_EQ(load_scene_json(file).triangle_count(), 1u);
@@ -357,7 +357,7 @@ TEST(SceneJson, LoadsFromAFileAndThroughLoadScene) {
 // ---- assets folder ----
 
 TEST(SceneJsonAssets, FindAssetsDirPrefersOptionThenEnvironmentThenSceneEntry) {
-  ScratchFolder folder;
+  TempFolder folder;
   for (const char* name : {"option", "env", "scene"}) std::filesystem::create_directories(folder.path() / name);
   LoadOptions options;
   options.assets_dir = folder.path() / "option";
@@ -376,7 +376,7 @@ TEST(SceneJsonAssets, FindAssetsDirPrefersOptionThenEnvironmentThenSceneEntry) {
 }
 
 TEST(SceneJsonAssets, FindAssetsDirListsEveryPlaceItLookedWhenNoneExists) {
-  ScratchFolder folder;
+  TempFolder folder;
   // The fallbacks relative to the current directory and the executable must not exist for this test.
   const std::filesystem::path previous = std::filesystem::current_path();
   std::filesystem::create_directories(folder.path() / "cwd");
@@ -398,7 +398,7 @@ TEST(SceneJsonAssets, FindAssetsDirListsEveryPlaceItLookedWhenNoneExists) {
 }
 
 TEST(SceneJsonAssets, MeshPathsResolveAgainstAssetsWhenGivenElseTheSceneFolder) {
-  ScratchFolder folder;
+  TempFolder folder;
   folder.write("scenes/local.gltf", triangle_gltf("local"));
   folder.write("assets/shared.gltf", triangle_gltf("shared"));
   folder.write("override/shared.gltf", triangle_gltf("override"));

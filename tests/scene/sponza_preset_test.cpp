@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "scene/embedded_sponza_scene.h"
-#include "scene/scratch_folder.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ TEST(SponzaPreset, MissingAssetsGiveOneErrorThatSaysWhereItLookedAndNamesGlintAs
                                                 exe / ".." / ".." / "shared" / "assets"})
     if (std::filesystem::exists(fallback)) GTEST_SKIP() << "assets are reachable through " << fallback;
 
-  testing::ScratchFolder folder;
+  testing::TempFolder folder;
   const std::filesystem::path previous = std::filesystem::current_path();
   std::filesystem::current_path(folder.path());  // no ../shared/assets from here
   const char* old_env = std::getenv("GLINT_ASSETS");

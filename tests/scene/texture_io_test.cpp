@@ -3,7 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "scene/png_writer.h"
-#include "scene/temp_folder.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 

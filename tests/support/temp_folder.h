@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace glint::testing {
 
@@ -40,6 +41,9 @@ public:
     out.write(text.data(), static_cast<std::streamsize>(text.size()));
     EXPECT_TRUE(out.good()) << "could not write " << file;
     return file;
+  }
+  std::filesystem::path write(const std::string& relative, const std::vector<std::uint8_t>& bytes) const {
+    return write(relative, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
   }
 
 private:
