@@ -9,13 +9,19 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <unordered_set>
 #include <vector>
 
 namespace glint::procedural {
+
 namespace {
 
-constexpr int kBlock = 8;    // cells per block edge
+constexpr int kBlock = 4;    // cells per block edge
 constexpr int kPadding = 2;  // cells of margin around the bounds
+// The narrow-band test assumes the field changes at most this much faster than a true distance
+// (the ellipsoid bound, the blend and armour ridges stay below it).
+constexpr float kLipschitz = 1.5f;
 
 struct Grid {
   vec3 origin{0.0f};
@@ -34,6 +40,19 @@ struct Grid {
     return origin + h * vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k));
   }
   int block_count() const { return blocks[0] * blocks[1] * blocks[2]; }
+  void block_coords(int b, int& bx, int& by, int& bz) const {
+    bx = b % blocks[0];
+    by = (b / blocks[0]) % blocks[1];
+    bz = b / (blocks[0] * blocks[1]);
+  }
+  vec3 block_centre(int b) const {
+    int bx, by, bz;
+    block_coords(b, bx, by, bz);
+    return origin + h * static_cast<float>(kBlock) *
+                        (vec3(static_cast<float>(bx), static_cast<float>(by), static_cast<float>(bz)) + 0.5f);
+  }
+  // Radius of a ball around block_centre() holding every point a block owns or its cells touch.
+  float block_radius() const { return 0.5f * std::sqrt(3.0f) * static_cast<float>(kBlock + 1) * h; }
 };
 
 Grid make_grid(const Aabb& bounds, float cell_size) {
@@ -53,12 +72,12 @@ Grid make_grid(const Aabb& bounds, float cell_size) {
   return grid;
 }
 
-// Evaluates the field at every point a block owns: points [b * kBlock, b * kBlock + kBlock) per
-// axis, clipped to the grid. Each point has exactly one owner, so parallel blocks never share writes.
+// The points a block owns: [b * kBlock, b * kBlock + kBlock) per axis, plus the grid's last point
+// for the last block. Each point has exactly one owner, so parallel blocks never share writes.
 template <typename PerPoint>
 void for_owned_points(const Grid& grid, int block, const PerPoint& per_point) {
-  const int bx = block % grid.blocks[0], by = (block / grid.blocks[0]) % grid.blocks[1],
-            bz = block / (grid.blocks[0] * grid.blocks[1]);
+  int bx, by, bz;
+  grid.block_coords(block, bx, by, bz);
   const int i_end = std::min(grid.n[0], (bx + 1) * kBlock + (bx + 1 == grid.blocks[0] ? 1 : 0));
   const int j_end = std::min(grid.n[1], (by + 1) * kBlock + (by + 1 == grid.blocks[1] ? 1 : 0));
   const int k_end = std::min(grid.n[2], (bz + 1) * kBlock + (bz + 1 == grid.blocks[2] ? 1 : 0));
@@ -70,25 +89,22 @@ void for_owned_points(const Grid& grid, int block, const PerPoint& per_point) {
 // Fills grid.value. With `narrow_band`, blocks far from the surface get their centre value
 // everywhere; a block is evaluated when it or a lower neighbour (whose cells reach into this
 // block's points) is near the surface. Returns which blocks were evaluated.
-std::vector<std::uint8_t> evaluate(Grid& grid, const ScalarField& field, bool narrow_band) {
+std::vector<std::uint8_t> evaluate(Grid& grid, const ImplicitField& field, bool narrow_band) {
   const int count = grid.block_count();
-  std::vector<float> centre(static_cast<std::size_t>(count));
+  std::vector<float> centre(static_cast<std::size_t>(count), 0.0f);
   std::vector<std::uint8_t> near(static_cast<std::size_t>(count), 1);
-  // Half-diagonal of a block, doubled: the test tolerates fields that change up to twice as fast
-  // as a true distance (the ellipsoid bound, the blend, armour ridges).
-  const float reach = 2.0f * 0.5f * std::sqrt(3.0f) * static_cast<float>(kBlock) * grid.h + grid.h;
+  const float reach = kLipschitz * grid.block_radius() + grid.h;
   if (narrow_band) {
     tbb::parallel_for(0, count, [&](int b) {
-      const int bx = b % grid.blocks[0], by = (b / grid.blocks[0]) % grid.blocks[1], bz = b / (grid.blocks[0] * grid.blocks[1]);
-      const vec3 c = grid.origin + grid.h * static_cast<float>(kBlock) *
-                                       (vec3(static_cast<float>(bx), static_cast<float>(by), static_cast<float>(bz)) + 0.5f);
-      centre[static_cast<std::size_t>(b)] = field(c);
-      near[static_cast<std::size_t>(b)] = std::abs(centre[static_cast<std::size_t>(b)]) < reach ? 1 : 0;
+      const float v = field.value(grid.block_centre(b));
+      centre[static_cast<std::size_t>(b)] = v;
+      near[static_cast<std::size_t>(b)] = std::abs(v) < reach ? 1 : 0;
     });
   }
   std::vector<std::uint8_t> evaluated(static_cast<std::size_t>(count), 0);
   for (int b = 0; b < count; ++b) {
-    const int bx = b % grid.blocks[0], by = (b / grid.blocks[0]) % grid.blocks[1], bz = b / (grid.blocks[0] * grid.blocks[1]);
+    int bx, by, bz;
+    grid.block_coords(b, bx, by, bz);
     bool needed = false;
     for (int d = 0; d < 8 && !needed; ++d) {
       const int x = bx - (d & 1), y = by - ((d >> 1) & 1), z = bz - ((d >> 2) & 1);
@@ -99,7 +115,17 @@ std::vector<std::uint8_t> evaluate(Grid& grid, const ScalarField& field, bool na
   }
   tbb::parallel_for(0, count, [&](int b) {
     if (evaluated[static_cast<std::size_t>(b)]) {
-      for_owned_points(grid, b, [&](int i, int j, int k) { grid.value[grid.point(i, j, k)] = field(grid.position(i, j, k)); });
+      constexpr std::size_t kMax = (kBlock + 1) * (kBlock + 1) * (kBlock + 1);
+      std::array<vec3, kMax> points;
+      std::array<float, kMax> values;
+      std::array<std::size_t, kMax> slots;
+      std::size_t n = 0;
+      for_owned_points(grid, b, [&](int i, int j, int k) {
+        points[n] = grid.position(i, j, k);
+        slots[n++] = grid.point(i, j, k);
+      });
+      field.values_near(grid.block_centre(b), grid.block_radius(), points.data(), values.data(), n);
+      for (std::size_t q = 0; q < n; ++q) grid.value[slots[q]] = values[q];
     } else {
       const float fill = centre[static_cast<std::size_t>(b)];
       for_owned_points(grid, b, [&](int i, int j, int k) { grid.value[grid.point(i, j, k)] = fill; });
@@ -117,6 +143,7 @@ constexpr std::array<std::array<int, 2>, 12> kCellEdges{{{0, 1}, {2, 3}, {4, 5},
 struct SurfaceCell {
   std::size_t cell;
   int i, j, k;
+  int block;
   vec3 position;
 };
 
@@ -129,7 +156,8 @@ std::vector<SurfaceCell> find_surface_cells(const Grid& grid, const std::vector<
   std::vector<std::vector<SurfaceCell>> per_block(blocks.size());
   tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t slot) {
     const int b = blocks[slot];
-    const int bx = b % grid.blocks[0], by = (b / grid.blocks[0]) % grid.blocks[1], bz = b / (grid.blocks[0] * grid.blocks[1]);
+    int bx, by, bz;
+    grid.block_coords(b, bx, by, bz);
     std::vector<SurfaceCell>& out = per_block[slot];
     for (int k = bz * kBlock; k < std::min((bz + 1) * kBlock, grid.n[2] - 1); ++k)
       for (int j = by * kBlock; j < std::min((by + 1) * kBlock, grid.n[1] - 1); ++j)
@@ -152,12 +180,59 @@ std::vector<SurfaceCell> find_surface_cells(const Grid& grid, const std::vector<
             sum += pa + t * (pb - pa);
             ++crossings;
           }
-          out.push_back({grid.cell(i, j, k), i, j, k, grid.position(i, j, k) + grid.h * (sum / static_cast<float>(crossings))});
+          out.push_back({grid.cell(i, j, k), i, j, k, b, grid.position(i, j, k) + grid.h * (sum / static_cast<float>(crossings))});
         }
   });
   std::vector<SurfaceCell> cells;
   for (auto& block : per_block) cells.insert(cells.end(), block.begin(), block.end());
   return cells;
+}
+
+// Resolves ambiguous faces (signs alternating around the face): the field at the face centre says
+// which diagonal pair is connected; the other pair's corner nearest the surface joins the centre's
+// side. Serial, in surface-cell order, so the result is deterministic. Returns the number changed.
+// A corner is changed at most once (`changed_points`), so fixes cannot undo each other.
+std::size_t resolve_ambiguous_faces(Grid& grid, const ImplicitField& field, const std::vector<SurfaceCell>& cells,
+                                    std::unordered_set<std::size_t>& changed_points) {
+  std::size_t changed = 0;
+  for (const SurfaceCell& c : cells) {
+    // The cell's three faces through its lowest corner: in the planes (x, y), (y, z), (z, x).
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3;
+      int corner[4][3];
+      for (int q = 0; q < 4; ++q) {
+        corner[q][0] = c.i, corner[q][1] = c.j, corner[q][2] = c.k;
+        corner[q][a] += (q == 1 || q == 2) ? 1 : 0;
+        corner[q][b] += (q >= 2) ? 1 : 0;
+      }
+      std::size_t slot[4];
+      bool in[4];
+      for (int q = 0; q < 4; ++q) {
+        slot[q] = grid.point(corner[q][0], corner[q][1], corner[q][2]);
+        in[q] = inside(grid.value[slot[q]]);
+      }
+      // Going round the face (0, 1, 2, 3): ambiguous when every step changes sign.
+      if (!(in[0] != in[1] && in[1] != in[2] && in[2] != in[3])) continue;
+      vec3 mid(0.0f);
+      for (int q = 0; q < 4; ++q) mid += grid.position(corner[q][0], corner[q][1], corner[q][2]);
+      const bool centre_inside = inside(field.value(0.25f * mid));
+      // Prefer a corner of the pair the centre separates; when both were changed already, join the
+      // other pair instead (either choice makes the face unambiguous).
+      int pick = -1;
+      for (int pass = 0; pass < 2 && pick < 0; ++pass)
+        for (int q = 0; q < 4; ++q) {
+          const bool wanted = pass == 0 ? in[q] != centre_inside : in[q] == centre_inside;
+          if (!wanted || changed_points.count(slot[q])) continue;
+          if (pick < 0 || std::abs(grid.value[slot[q]]) < std::abs(grid.value[slot[pick]])) pick = q;
+        }
+      if (pick < 0) continue;
+      // A tiny value of the other sign: the crossing stays next to that corner.
+      grid.value[slot[pick]] = (inside(grid.value[slot[pick]]) ? 1e-6f : -1e-6f) * grid.h;
+      changed_points.insert(slot[pick]);
+      ++changed;
+    }
+  }
+  return changed;
 }
 
 // Builds the faces; returns false when a quad needed a cell that has no vertex (the narrow band
@@ -202,55 +277,123 @@ bool build_faces(const Grid& grid, const std::vector<SurfaceCell>& cells, std::v
   return true;
 }
 
-}  // namespace
-
-std::size_t count_surface_vertices(const ScalarField& field, const Aabb& bounds, float cell_size) {
-  Grid grid = make_grid(bounds, cell_size);
-  const auto evaluated = evaluate(grid, field, true);
-  return find_surface_cells(grid, evaluated).size();
+// Normals from the field gradient (central differences a quarter cell wide), evaluated block by
+// block so the field can reuse its per-region preparation.
+void compute_normals(const Grid& grid, const ImplicitField& field, const std::vector<SurfaceCell>& cells,
+                     std::vector<vec3>& normals) {
+  normals.resize(cells.size());
+  std::vector<std::size_t> starts;
+  for (std::size_t v = 0; v < cells.size(); ++v)
+    if (v == 0 || cells[v].block != cells[v - 1].block) starts.push_back(v);
+  starts.push_back(cells.size());
+  const float step = 0.25f * grid.h;
+  tbb::parallel_for(std::size_t{0}, starts.size() - 1, [&](std::size_t r) {
+    const std::size_t first = starts[r], last = starts[r + 1];
+    std::vector<vec3> points;
+    points.reserve((last - first) * 6);
+    for (std::size_t v = first; v < last; ++v)
+      for (int a = 0; a < 3; ++a) {
+        vec3 offset(0.0f);
+        offset[a] = step;
+        points.push_back(cells[v].position + offset);
+        points.push_back(cells[v].position - offset);
+      }
+    std::vector<float> values(points.size());
+    field.values_near(grid.block_centre(cells[first].block), grid.block_radius() + 2.0f * grid.h, points.data(),
+                      values.data(), points.size());
+    for (std::size_t v = first; v < last; ++v) {
+      const float* g = values.data() + (v - first) * 6;
+      const vec3 gradient(g[0] - g[1], g[2] - g[3], g[4] - g[5]);
+      const float length = glm::length(gradient);
+      normals[v] = length > 0.0f ? gradient / length : vec3(0.0f, 1.0f, 0.0f);
+    }
+  });
 }
 
-Mesh polygonize(const ScalarField& field, const Aabb& bounds, float cell_size) {
+}  // namespace
+
+namespace {
+// Evaluates the grid and finds its surface cells after resolving ambiguous faces.
+std::vector<SurfaceCell> surface_cells(Grid& grid, const ImplicitField& field, bool narrow_band,
+                                       std::vector<std::uint8_t>& evaluated) {
+  evaluated = evaluate(grid, field, narrow_band);
+  std::vector<SurfaceCell> cells = find_surface_cells(grid, evaluated);
+  // Each fix can create a new ambiguous face next to it; a few rounds settle them all.
+  std::unordered_set<std::size_t> changed_points;
+  for (int round = 0; round < 16; ++round) {
+    if (resolve_ambiguous_faces(grid, field, cells, changed_points) == 0) break;
+    cells = find_surface_cells(grid, evaluated);
+  }
+  return cells;
+}
+}  // namespace
+
+std::size_t count_surface_vertices(const ImplicitField& field, const Aabb& bounds, float cell_size) {
+  Grid grid = make_grid(bounds, cell_size);
+  std::vector<std::uint8_t> evaluated;
+  return surface_cells(grid, field, true, evaluated).size();
+}
+
+std::size_t count_surface_vertices(const ScalarField& field, const Aabb& bounds, float cell_size) {
+  return count_surface_vertices(FunctionField(field), bounds, cell_size);
+}
+
+Mesh polygonize(const ImplicitField& field, const Aabb& bounds, float cell_size) {
   Grid grid = make_grid(bounds, cell_size);
   Mesh mesh;
+  std::vector<SurfaceCell> cells;
   for (int attempt = 0; attempt < 2; ++attempt) {
     const bool narrow_band = attempt == 0;
-    const auto evaluated = evaluate(grid, field, narrow_band);
-    const std::vector<SurfaceCell> cells = find_surface_cells(grid, evaluated);
+    std::vector<std::uint8_t> evaluated;
+    cells = surface_cells(grid, field, narrow_band, evaluated);
     mesh.positions.resize(cells.size());
     for (std::size_t v = 0; v < cells.size(); ++v) mesh.positions[v] = cells[v].position;
     if (build_faces(grid, cells, mesh.indices, mesh.positions)) break;
     if (!narrow_band) fail("isosurface: the field is not positive on the grid border (surface leaves the bounds)");
     log_debug("isosurface: narrow band missed part of the surface, evaluating the whole grid");
   }
-  // Normals: the field's gradient by central differences a quarter cell wide.
-  mesh.normals.resize(mesh.positions.size());
-  const float step = 0.25f * cell_size;
-  tbb::parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t v) {
-    const vec3 p = mesh.positions[v];
-    const vec3 g(field(p + vec3(step, 0, 0)) - field(p - vec3(step, 0, 0)), field(p + vec3(0, step, 0)) - field(p - vec3(0, step, 0)),
-                 field(p + vec3(0, 0, step)) - field(p - vec3(0, 0, step)));
-    const float length = glm::length(g);
-    mesh.normals[v] = length > 0.0f ? g / length : vec3(0.0f, 1.0f, 0.0f);
-  });
+  compute_normals(grid, field, cells, mesh.normals);
   return mesh;
 }
 
-TargetedMesh polygonize_to_vertex_count(const ScalarField& field, const Aabb& bounds, std::size_t target_vertices,
-                                        float tolerance, int max_steps) {
+Mesh polygonize(const ScalarField& field, const Aabb& bounds, float cell_size) {
+  return polygonize(FunctionField(field), bounds, cell_size);
+}
+
+TargetedMesh polygonize_to_vertex_count(const ImplicitField& field, const Aabb& bounds, std::size_t target_vertices,
+                                        float tolerance, int max_steps, float initial_cell) {
   if (target_vertices < 8) fail("isosurface: a target of {} vertices is too small", target_vertices);
-  const vec3 extent = bounds.extent();
-  // Coarse first count: about 48 cells along the longest side.
-  float cell = std::max(extent.x, std::max(extent.y, extent.z)) / 48.0f;
-  std::size_t count = count_surface_vertices(field, bounds, cell);
-  if (count == 0) fail("isosurface: the field has no surface inside the bounds");
   const auto target = static_cast<double>(target_vertices);
+  // The count follows count ~ C / cell^p with p close to 2 (area / cell^2; finer grids resolve a
+  // little more detail, so p is fitted from the last two counts when there are two).
+  double exponent = 2.0;
+  auto predict = [&](float cell, std::size_t count) {
+    return cell * static_cast<float>(std::pow(static_cast<double>(count) / target, 1.0 / exponent));
+  };
+  auto fit = [&](float cell_a, std::size_t count_a, float cell_b, std::size_t count_b) {
+    if (count_a == 0 || count_b == 0 || cell_a == cell_b) return;
+    const double p = std::log(static_cast<double>(count_b) / static_cast<double>(count_a)) /
+                     std::log(static_cast<double>(cell_a) / static_cast<double>(cell_b));
+    exponent = std::clamp(p, 1.5, 2.5);
+  };
+  float cell = initial_cell;
+  if (!(cell > 0.0f)) {
+    // Coarse first count (about 48 cells along the longest side), then a count at twice the
+    // predicted cell size: a quarter of the cost of the real mesh, and it fixes the exponent.
+    const vec3 extent = bounds.extent();
+    const float coarse = std::max(extent.x, std::max(extent.y, extent.z)) / 48.0f;
+    const std::size_t coarse_count = count_surface_vertices(field, bounds, coarse);
+    if (coarse_count == 0) fail("isosurface: the field has no surface inside the bounds");
+    const float half = 2.0f * predict(coarse, coarse_count);
+    const std::size_t half_count = count_surface_vertices(field, bounds, half);
+    fit(coarse, coarse_count, half, half_count);
+    cell = predict(half, half_count);
+  }
   TargetedMesh best;
   double best_error = std::numeric_limits<double>::infinity();
   for (int step = 0; step < max_steps; ++step) {
-    cell *= static_cast<float>(std::sqrt(static_cast<double>(count) / target));
     Mesh mesh = polygonize(field, bounds, cell);
-    count = mesh.vertex_count();
+    const std::size_t count = mesh.vertex_count();
     const double error = std::abs(static_cast<double>(count) - target) / target;
     if (error < best_error) {
       best_error = error;
@@ -259,8 +402,14 @@ TargetedMesh polygonize_to_vertex_count(const ScalarField& field, const Aabb& bo
     }
     best.meshes_built = step + 1;
     if (error <= tolerance || count == 0) break;
+    cell = predict(cell, count);
   }
   return best;
+}
+
+TargetedMesh polygonize_to_vertex_count(const ScalarField& field, const Aabb& bounds, std::size_t target_vertices,
+                                        float tolerance, int max_steps, float initial_cell) {
+  return polygonize_to_vertex_count(FunctionField(field), bounds, target_vertices, tolerance, max_steps, initial_cell);
 }
 
 }  // namespace glint::procedural

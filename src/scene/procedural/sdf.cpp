@@ -1,5 +1,7 @@
 #include "scene/procedural/sdf.h"
 
+#include "core/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -68,12 +70,15 @@ SdfPrimitive capsule(vec3 a, vec3 b, float ra, float rb) {
 }
 
 void BlendedShape::add(const SdfPrimitive& primitive) {
+  if (primitives_.size() >= 65535) fail("BlendedShape: too many primitives");
+  all_.push_back(static_cast<std::uint16_t>(primitives_.size()));
   primitives_.push_back({primitive, primitive.bound_center(), primitive.bound_radius(), primitive.bound_scale()});
 }
 
-float BlendedShape::distance(const vec3& p) const {
+float BlendedShape::fold(const vec3& p, const std::uint16_t* order, std::size_t count) const {
   float result = std::numeric_limits<float>::max();
-  for (const Entry& e : primitives_) {
+  for (std::size_t n = 0; n < count; ++n) {
+    const Entry& e = primitives_[order[n]];
     // A lower bound of the primitive's value (SdfPrimitive::bound_scale); when even that is
     // `blend` above the running result, smooth_min would return the running result unchanged.
     const float outside = glm::length(p - e.center) - e.radius;
@@ -82,6 +87,27 @@ float BlendedShape::distance(const vec3& p) const {
     result = result == std::numeric_limits<float>::max() ? d : smooth_min(result, d, blend_);
   }
   return result;
+}
+
+float BlendedShape::distance(const vec3& p) const {
+  return fold(p, all_.data(), all_.size());
+}
+
+void BlendedShape::values_near(const vec3& centre, float radius, const vec3* points, float* out,
+                               std::size_t count) const {
+  constexpr float kLipschitz = 2.0f;
+  // Every point of the ball has a primitive within `nearest` (the smallest upper bound).
+  float nearest = std::numeric_limits<float>::max();
+  for (const Entry& e : primitives_) nearest = std::min(nearest, e.primitive.distance(centre) + kLipschitz * radius);
+  std::vector<std::uint16_t> kept;
+  kept.reserve(primitives_.size());
+  for (std::size_t i = 0; i < primitives_.size(); ++i) {
+    const Entry& e = primitives_[i];
+    const float outside = glm::length(centre - e.center) - e.radius - radius;
+    if (outside >= 0.0f && e.scale * outside - e.primitive.ridge_depth >= nearest + blend_) continue;
+    kept.push_back(static_cast<std::uint16_t>(i));
+  }
+  for (std::size_t q = 0; q < count; ++q) out[q] = fold(points[q], kept.data(), kept.size());
 }
 
 vec3 BlendedShape::gradient(const vec3& p, float step) const {

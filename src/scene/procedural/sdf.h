@@ -4,7 +4,9 @@
 // (the ellipsoid and the blend are bounds, not exact distances; the polygoniser only needs the
 // sign and a value that is smooth and close to the distance near the surface).
 #include "core/math.h"
+#include "scene/procedural/implicit_field.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace glint::procedural {
@@ -39,13 +41,17 @@ SdfPrimitive capsule(vec3 a, vec3 b, float ra, float rb);
 // The union of primitives blended by smooth_min with width `blend`, evaluated in order. A
 // primitive whose distance is provably at least `blend` above the running result cannot change it
 // (smooth_min then returns the running value exactly), so it is skipped: the result is identical
-// to the full evaluation, only faster.
-class BlendedShape {
+// to the full evaluation, only faster. For a ball of points (values_near) the primitives that
+// cannot come within `blend` of the nearest one anywhere in the ball are dropped once, assuming
+// each primitive's value changes at most twice as fast as a true distance.
+class BlendedShape final : public ImplicitField {
 public:
   BlendedShape() = default;
   explicit BlendedShape(float blend) : blend_(blend) {}
   void add(const SdfPrimitive& primitive);
   float distance(const vec3& p) const;
+  float value(const vec3& p) const override { return distance(p); }
+  void values_near(const vec3& centre, float radius, const vec3* points, float* out, std::size_t count) const override;
   vec3 gradient(const vec3& p, float step) const;  // central differences
   Aabb bounds() const;                              // contains every primitive's bounding sphere
   std::size_t size() const { return primitives_.size(); }
@@ -57,7 +63,10 @@ private:
     float radius;
     float scale;
   };
+  // The running smooth union over `primitives_[order[0..count)]` with the per-point early-out.
+  float fold(const vec3& p, const std::uint16_t* order, std::size_t count) const;
   std::vector<Entry> primitives_;
+  std::vector<std::uint16_t> all_;  // 0, 1, ..., size - 1
   float blend_ = 0.05f;
 };
 
