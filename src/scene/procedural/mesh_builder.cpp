@@ -29,6 +29,10 @@ vec3 safe_normalize(vec3 v, vec3 fallback) {
 }  // namespace
 
 void MeshBuilder::add_patch(int nu, int nv, const SurfaceFn& surface, const UvMap& uv, vec3 facing) {
+  add_patch(nu, nv, surface, [uv](const vec3&, float u, float v) { return uv.offset + vec2(u, v) * uv.scale; }, facing);
+}
+
+void MeshBuilder::add_patch(int nu, int nv, const SurfaceFn& surface, const UvFn& uv, vec3 facing) {
   const bool flip = glm::dot(patch_normal(surface, 0.5f, 0.5f), facing) < 0.0f;
   const vec3 fallback = safe_normalize(facing, vec3(0, 1, 0));
   const auto base = static_cast<std::uint32_t>(mesh_.positions.size());
@@ -36,10 +40,11 @@ void MeshBuilder::add_patch(int nu, int nv, const SurfaceFn& surface, const UvMa
     const float v = static_cast<float>(j) / static_cast<float>(nv);
     for (int i = 0; i <= nu; ++i) {
       const float u = static_cast<float>(i) / static_cast<float>(nu);
-      mesh_.positions.push_back(surface(u, v));
+      const vec3 p = surface(u, v);
+      mesh_.positions.push_back(p);
       const vec3 n = safe_normalize(patch_normal(surface, u, v), fallback);
       mesh_.normals.push_back(flip ? -n : n);
-      mesh_.uvs.push_back(uv.offset + vec2(u, v) * uv.scale);
+      mesh_.uvs.push_back(uv(p, u, v));
     }
   }
   const auto row = static_cast<std::uint32_t>(nu + 1);

@@ -34,6 +34,10 @@ public:
   // interior and agree with neighbouring patches of the same surface. `facing` is the direction the
   // front side must face at the patch's centre.
   void add_patch(int nu, int nv, const SurfaceFn& surface, const UvMap& uv, vec3 facing);
+  // The same with texture coordinates from the point and its parameters (e.g. planar world
+  // projection, so neighbouring patches of one wall share one texture layout).
+  using UvFn = std::function<vec2(const vec3& point, float u, float v)>;
+  void add_patch(int nu, int nv, const SurfaceFn& surface, const UvFn& uv, vec3 facing);
 
   // A planar rectangle corner + s * edge_u + t * edge_v, tessellated to at most `max_segment`.
   // Its front faces along cross(edge_u, edge_v) unless `facing` says otherwise.
