@@ -30,8 +30,8 @@ Walkthrough atrium_walkthrough() {
       {{5.0f, 3.0f}, {-1.0f, 0.5f}},
       {{0.0f, 3.0f}, {-6.0f, 0.5f}},
       {{-5.0f, 3.0f}, {-11.0f, 0.0f}},
-      {{-9.5f, 2.8f}, {-14.0f, -3.0f}},
-      {{-12.5f, 0.0f}, {-14.0f, -6.0f}}, // across the hall behind the dinosaur, into the -z aisle
+      {{-10.0f, 3.0f}, {-14.5f, -3.0f}},
+      {{-13.2f, 0.8f}, {-14.0f, -6.0f}}, // across the hall between the dinosaur and the armadillo
       {{-14.0f, -5.0f}, {-10.0f, -7.0f}},
       {{-11.5f, -7.0f}, {-5.0f, -7.0f}}, // -z aisle, walking towards +x
       {{-3.0f, -7.0f}, {3.0f, -7.0f}},
