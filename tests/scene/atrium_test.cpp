@@ -1,7 +1,7 @@
 #include "scene/procedural/atrium.h"
 
 #include "core/error.h"
-#include "scene/catmull_rom_sampler.h"
+#include "scene/camera_path.h"
 #include "scene/mesh_checks.h"
 #include "scene/mesh_ops.h"
 #include "scene/presets.h"
@@ -185,10 +185,12 @@ TEST(Atrium, CameraPathStaysInsideAndClearOfColumnsAndCreatures) {
     EXPECT_NEAR(p.y, 1.7f, 0.2f);
   }
   for (const vec3& t : camera.targets) EXPECT_TRUE(atrium::interior_bounds().contains(t)) << t.x << " " << t.z;
-  const testing::CatmullRomSampler path(camera.points);
+  // Every frame's camera position, as the renderer will place it.
+  const WalkthroughAnimation animation(scene);
   const std::vector<Aabb> creatures = creature_boxes(scene);
   ASSERT_EQ(creatures.size(), 6u);
-  for (const vec3& p : path.samples()) {
+  for (int f = 0; f < animation.frame_count(); ++f) {
+    const vec3 p = animation.at(f).camera.position;
     ASSERT_TRUE(inside.contains(p)) << p.x << " " << p.z;
     for (const vec2 c : atrium::lower_column_centres())
       ASSERT_GT(glm::distance(vec2(p.x, p.z), c), atrium::kLowerAbacusHalf + 0.3f) << "near column at " << c.x << " " << c.y;
@@ -206,13 +208,13 @@ TEST(Atrium, QualityFramesLookDownTheHallAtTheCreatures) {
   const Walkthrough& walk = scene.walkthrough;
   EXPECT_EQ(walk.frame_count, 4900);
   EXPECT_FLOAT_EQ(walk.frames_per_second, 30.0f);
-  const testing::CatmullRomSampler path(walk.camera.points), targets(walk.camera.targets);
+  const WalkthroughAnimation animation(scene);
   std::vector<vec3> creatures;
   for (const Aabb& box : creature_boxes(scene)) creatures.push_back(box.center());
   auto frame = [&](int f, vec3& eye, vec3& direction) {
-    const float fraction = static_cast<float>(f) / static_cast<float>(walk.frame_count - 1);
-    eye = path.at_fraction(fraction);
-    direction = glm::normalize(targets.at_fraction(fraction) - eye);
+    const CameraState camera = animation.at(f).camera;
+    eye = camera.position;
+    direction = glm::normalize(camera.target - eye);
   };
   for (const int f : {1800, 2100, 2300}) {
     SCOPED_TRACE(f);
