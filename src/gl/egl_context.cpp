@@ -16,6 +16,11 @@
 #include <string_view>
 #include <vector>
 
+// EGL_EXT_device_drm_render_node is newer than libepoxy 1.5.10's generated headers.
+#ifndef EGL_DRM_RENDER_NODE_FILE_EXT
+#define EGL_DRM_RENDER_NODE_FILE_EXT 0x3377
+#endif
+
 namespace glint {
 namespace {
 
