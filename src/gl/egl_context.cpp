@@ -59,11 +59,15 @@ void release_display(EGLDisplay display) {
   eglTerminate(display);
 }
 
-// libepoxy aborts the process when it cannot load libEGL; probe first so that a machine without EGL
-// gets a glint::Error (and tests can skip) instead.
-void require_egl_library() {
+// libepoxy aborts the process when it cannot load libEGL, or the library it resolves desktop GL
+// functions from (glvnd's libOpenGL, else libGL); probe first so that a machine without them gets a
+// glint::Error (and tests can skip) instead. The handles stay open: epoxy uses these libraries.
+void require_gl_libraries() {
   if (dlopen("libEGL.so.1", RTLD_LAZY | RTLD_GLOBAL) == nullptr)
     fail("headless OpenGL needs libEGL.so.1, which could not be loaded: {}", dlerror());
+  if (dlopen("libOpenGL.so.0", RTLD_LAZY | RTLD_GLOBAL) == nullptr &&
+      dlopen("libGL.so.1", RTLD_LAZY | RTLD_GLOBAL) == nullptr)
+    fail("headless OpenGL needs libOpenGL.so.0 or libGL.so.1, neither could be loaded: {}", dlerror());
 }
 
 bool has_extension(const char* list, std::string_view name) {
@@ -200,7 +204,7 @@ bool resolve_gl_debug_output(const HeadlessGlOptions& options) {
 }
 
 HeadlessGlContext::HeadlessGlContext(const HeadlessGlOptions& options) {
-  require_egl_library();
+  require_gl_libraries();
   const EglDevices devices = query_egl_devices();
   if (devices.handles.empty())
     fail("no EGL device found (eglQueryDevicesEXT lists none): install a GPU driver with EGL, or Mesa for llvmpipe");

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <regex>
 
