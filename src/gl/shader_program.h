@@ -1,0 +1,65 @@
+#pragma once
+// A linked GLSL program compiled from #include-free sources. Every failure is a glint::Error that
+// names the shader file and, for compile errors, the line the driver reported, with the driver's full
+// log underneath ("shaders/ssr.frag.glsl:42: GLSL compile error\n0:42(7): error: ...").
+#include "core/math.h"
+#include "gl/gl_objects.h"
+
+#include <epoxy/gl.h>
+
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace glint {
+
+struct ShaderStageSource {
+  GLenum stage;             // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER, ...
+  std::string name;         // shown in errors: the file name, e.g. "shaders/ssr.frag.glsl"
+  std::string_view source;  // complete GLSL source, starting with #version
+};
+
+// The stage a file name declares by its suffix: .vert.glsl, .frag.glsl, .geom.glsl, .comp.glsl,
+// .tesc.glsl, .tese.glsl. Any other name is a glint::Error.
+GLenum shader_stage_from_name(std::string_view name);
+
+// The source line of the first error in a compiler info log, in Mesa's "0:12(3): error", NVIDIA's
+// "0(12) : error" or AMD's "ERROR: 0:12:" format; nullopt when the log names no line.
+std::optional<int> parse_glsl_error_line(std::string_view info_log);
+
+class ShaderProgram {
+public:
+  // Compiles every stage and links them into one program.
+  static ShaderProgram from_sources(const std::vector<ShaderStageSource>& stages);
+  // The same from shaders embedded from shaders/ (see embedded_shaders.h), stage from the suffix:
+  // ShaderProgram::from_embedded({"fullscreen.vert.glsl", "solid_color.frag.glsl"}).
+  static ShaderProgram from_embedded(std::initializer_list<std::string_view> names);
+
+  GLuint id() const { return program_.id(); }
+  const std::string& name() const { return name_; }  // "a.vert.glsl + b.frag.glsl"
+  void use() const { glUseProgram(program_.id()); }
+
+  // Location of a uniform, or -1 when the program has no such active uniform (the compiler removes
+  // unused ones, so -1 is not an error; setting -1 is a no-op in GL).
+  GLint uniform_location(std::string_view uniform);
+
+  // Direct-state-access setters (glProgramUniform*): no need to bind the program first.
+  void set_uniform(std::string_view uniform, int value);
+  void set_uniform(std::string_view uniform, float value);
+  void set_uniform(std::string_view uniform, const vec2& value);
+  void set_uniform(std::string_view uniform, const vec3& value);
+  void set_uniform(std::string_view uniform, const vec4& value);
+  void set_uniform(std::string_view uniform, const mat4& value);
+
+private:
+  ShaderProgram(GlProgram program, std::string name) : program_(std::move(program)), name_(std::move(name)) {}
+
+  GlProgram program_;
+  std::string name_;
+  std::unordered_map<std::string, GLint> locations_;  // glGetUniformLocation is a string lookup
+};
+
+}  // namespace glint

@@ -1,0 +1,112 @@
+#include "gl/gl_check.h"
+#include "gl/gpu_timer.h"
+#include "gl/shader_program.h"
+#include "gl_test_context.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace glint {
+namespace {
+
+using GlGpuTimer = testing::GlTest;
+
+// Something worth timing: a full-screen triangle into a 256x256 target.
+class Workload {
+public:
+  Workload()
+      : colour_(create_texture_2d(GL_RGBA8, 256, 256)),
+        framebuffer_(create_framebuffer()),
+        vertex_array_(create_vertex_array()),
+        program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "solid_color.frag.glsl"})) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, colour_.id(), 0);
+    program_.set_uniform("color", vec4(0.5f));
+  }
+  void draw() {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
+    glViewport(0, 0, 256, 256);
+    program_.use();
+    glBindVertexArray(vertex_array_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+private:
+  GlTexture colour_;
+  GlFramebuffer framebuffer_;
+  GlVertexArray vertex_array_;
+  ShaderProgram program_;
+};
+
+TEST_F(GlGpuTimer, GivesAFiniteNonNegativeTimePerNamedPassAfterADraw) {
+  Workload workload;
+  GpuTimer timer;
+  timer.begin_frame();
+  {
+    auto scope = timer.time_pass("fullscreen");
+    workload.draw();
+  }
+  {
+    auto scope = timer.time_pass("fullscreen again");
+    workload.draw();
+  }
+  timer.end_frame();
+  timer.wait_for_all();
+  check_gl("timed frame");
+
+  const auto frames = timer.take_completed();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0].frame, 0u);
+  ASSERT_EQ(frames[0].passes.size(), 2u);
+  EXPECT_EQ(frames[0].passes[0].name, "fullscreen");
+  EXPECT_EQ(frames[0].passes[1].name, "fullscreen again");
+  for (const auto& pass : frames[0].passes) {
+    EXPECT_TRUE(std::isfinite(pass.milliseconds)) << pass.name;
+    EXPECT_GE(pass.milliseconds, 0.0) << pass.name;
+  }
+  EXPECT_TRUE(timer.take_completed().empty()) << "each frame comes out once";
+}
+
+TEST_F(GlGpuTimer, EveryFrameComesOutOnceAndInOrder) {
+  Workload workload;
+  GpuTimer timer;
+  std::vector<FrameTimes> frames;
+  for (int frame = 0; frame < 6; ++frame) {
+    timer.begin_frame();
+    if (frame != 3) {  // an untimed frame still yields a (empty) row
+      auto scope = timer.time_pass("draw");
+      workload.draw();
+    }
+    timer.end_frame();
+    for (auto& done : timer.take_completed()) frames.push_back(std::move(done));
+    // Double buffering: only the frame just ended and the one before may still be outstanding.
+    EXPECT_GE(frames.size() + 1, static_cast<std::size_t>(frame));
+    EXPECT_LE(frames.size(), static_cast<std::size_t>(frame + 1));
+  }
+  timer.wait_for_all();
+  for (auto& done : timer.take_completed()) frames.push_back(std::move(done));
+  ASSERT_EQ(frames.size(), 6u);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(frames[i].frame, i);
+    EXPECT_EQ(frames[i].passes.size(), i == 3 ? 0u : 1u);
+  }
+  check_gl("six frames");
+}
+
+TEST_F(GlGpuTimer, MisuseIsAnErrorNotAGlError) {
+  GpuTimer timer;
+  EXPECT_THROW(timer.begin_pass("outside a frame"), Error);
+  timer.begin_frame();
+  EXPECT_THROW(timer.begin_frame(), Error);
+  timer.begin_pass("outer");
+  EXPECT_THROW(timer.begin_pass("inner"), Error);  // GL_TIME_ELAPSED queries cannot nest
+  EXPECT_THROW(timer.end_frame(), Error);
+  timer.end_pass();
+  timer.end_frame();
+  timer.wait_for_all();
+  EXPECT_EQ(timer.take_completed().size(), 1u);
+  check_gl("timer misuse");
+}
+
+}  // namespace
+}  // namespace glint
