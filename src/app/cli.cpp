@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/devices_command.h"
 #include "app/info_command.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -22,6 +23,8 @@ int run_cli(int argc, char** argv) {
 
   InfoOptions info;
   add_info_command(app, info);
+  DevicesOptions devices;
+  add_devices_command(app, devices);
 
   try {
     app.parse(argc, argv);
@@ -39,6 +42,7 @@ int run_cli(int argc, char** argv) {
 
   try {
     if (app.got_subcommand("info")) return run_info_command(info);
+    if (app.got_subcommand("devices")) return run_devices_command(devices);
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;

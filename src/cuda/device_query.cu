@@ -13,7 +13,7 @@ std::vector<CudaDeviceInfo> query_cuda_devices(std::string* why_none) {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
   if (status != cudaSuccess) {
-    if (why_none) *why_none = cudaGetErrorString(status);
+    if (why_none) *why_none = fmt::format("no usable CUDA GPU: {}", cudaGetErrorString(status));
     cudaGetLastError();  // clear the sticky "no device" error so later calls start clean
     return devices;
   }

@@ -32,3 +32,21 @@ TEST(CliInfo, TextOutputShowsCountsBoundsLightAndPaths) {
 
 }  // namespace
 }  // namespace glint::testing
+
+namespace glint::testing {
+namespace {
+
+TEST(CliDevices, JsonAccountsForCudaAndOpenGlEitherWay) {
+  const CliResult r = run_glint("devices --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json devices = nlohmann::json::parse(r.out);
+  // Each of CUDA and OpenGL is either listed or explained, never silently absent.
+  EXPECT_TRUE(!devices["cuda"].empty() || devices.contains("cuda_unavailable")) << r.out;
+  EXPECT_TRUE(devices.contains("opengl") != devices.contains("opengl_unavailable")) << r.out;
+  if (devices.contains("opengl")) {
+    EXPECT_FALSE(devices["opengl"]["renderer"].get<std::string>().empty());
+  }
+}
+
+}  // namespace
+}  // namespace glint::testing
