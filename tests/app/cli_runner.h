@@ -7,6 +7,8 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "support/test_paths.h"
+
 namespace glint::testing {
 
 struct CliResult {
@@ -27,8 +29,11 @@ inline CliResult run_glint(const std::string& arguments) {
   const auto dir = std::filesystem::temp_directory_path() / ("glint_cli_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = std::string("\"") + GLINT_CLI_PATH + "\" " + arguments + " >\"" + out.string() + "\" 2>\"" +
-                              err.string() + "\"";
+  // Built by appending (GCC 12 warns falsely about "literal" + std::string under -O2).
+  std::string command;
+  for (const std::string& part : {std::string("\""), cli_path(), std::string("\" "), arguments, std::string(" >\""),
+                                  out.string(), std::string("\" 2>\""), err.string(), std::string("\"")})
+    command += part;
   const int status = std::system(command.c_str());
   CliResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_paths.h"
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -50,7 +52,7 @@ TEST(GlShaderStage, ComesFromTheFileSuffix) {
 
 TEST(GlEmbeddedShaders, EmbedsTheFilesExactly) {
   for (const char* name : {"fullscreen.vert.glsl", "solid_color.frag.glsl"}) {
-    std::ifstream file(std::string(GLINT_SOURCE_DIR) + "/shaders/" + name, std::ios::binary);
+    std::ifstream file((testing::source_dir() / "shaders" / name).string(), std::ios::binary);
     ASSERT_TRUE(file) << name;
     std::stringstream contents;
     contents << file.rdbuf();

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_paths.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -17,7 +19,7 @@ std::filesystem::path sponza_path() {
   const char* assets = std::getenv("GLINT_ASSETS");
   const std::filesystem::path folder = assets != nullptr && *assets != '\0'
                                            ? std::filesystem::path(assets)
-                                           : std::filesystem::path(GLINT_SOURCE_DIR "/../shared/assets");
+                                           : testing::source_dir() / ".." / "shared" / "assets";
   return folder / "sponza_dabrovic" / "sponza.obj";
 }
 

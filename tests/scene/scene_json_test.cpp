@@ -14,6 +14,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "support/test_paths.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <optional>
@@ -456,7 +458,7 @@ TEST(SceneJsonAppend, ReindexesTexturesMaterialsAndMeshesAndComposesTransforms) 
 // ---- the example scene file ----
 
 TEST(SceneJsonExample, SponzaSceneFileParsesIntoTheExpectedDescription) {
-  const std::filesystem::path file = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes" / "sponza.scene.json";
+  const std::filesystem::path file = testing::source_dir() / "scenes" / "sponza.scene.json";
   std::ifstream in(file);
   ASSERT_TRUE(in) << file;
   std::stringstream text;
@@ -505,7 +507,7 @@ namespace glint {
 namespace {
 
 TEST(SceneJsonExample, TheDocumentationsCompleteExampleParses) {
-  const std::filesystem::path doc = std::filesystem::path(GLINT_SOURCE_DIR) / "docs" / "scene-format.md";
+  const std::filesystem::path doc = testing::source_dir() / "docs" / "scene-format.md";
   std::ifstream in(doc);
   ASSERT_TRUE(in) << doc;
   std::stringstream text;

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_paths.h"
+
 #include <cstdlib>
 #include <fstream>
 #include <optional>
@@ -16,14 +18,14 @@ namespace {
 
 // The shared assets beside the checkout (../shared/assets) or beside the worktrees folder.
 std::optional<std::filesystem::path> shared_assets() {
-  const std::filesystem::path source(GLINT_SOURCE_DIR);
+  const std::filesystem::path source = testing::source_dir();
   for (const std::filesystem::path& candidate : {source / ".." / "shared" / "assets", source / ".." / ".." / "shared" / "assets"})
     if (std::filesystem::exists(candidate / "sponza_dabrovic" / "sponza.obj")) return candidate.lexically_normal();
   return std::nullopt;
 }
 
 TEST(SponzaPreset, EmbedsTheExampleSceneFileVerbatim) {
-  const std::filesystem::path file = std::filesystem::path(GLINT_SOURCE_DIR) / "scenes" / "sponza.scene.json";
+  const std::filesystem::path file = testing::source_dir() / "scenes" / "sponza.scene.json";
   std::ifstream in(file);
   ASSERT_TRUE(in) << file;
   std::stringstream text;
@@ -33,7 +35,7 @@ TEST(SponzaPreset, EmbedsTheExampleSceneFileVerbatim) {
 }
 
 TEST(SponzaPreset, MissingAssetsGiveOneErrorThatSaysWhereItLookedAndNamesGlintAssets) {
-  const std::filesystem::path source(GLINT_SOURCE_DIR);
+  const std::filesystem::path source = testing::source_dir();
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe").parent_path();
   // The scene's own "../../shared/assets" and the executable-relative fallbacks must be absent here.
   for (const std::filesystem::path& fallback : {source / ".." / "shared" / "assets", exe / ".." / "shared" / "assets",
