@@ -46,9 +46,11 @@ struct TriangleHit {
 // traversal and a brute-force loop agree bit for bit on the closest t.
 GLINT_HOST_DEVICE inline bool intersect_triangle(const WatertightRay& ray, const Triangle& tri, float t_min, float t_max,
                                                  TriangleHit& hit) {
-  const vec3 a = tri.v0 - ray.origin;
-  const vec3 b = tri.v1 - ray.origin;
-  const vec3 c = tri.v2 - ray.origin;
+  // Plain arrays: indexing them with the per-ray axes is a load, where glm's operator[] is a switch.
+  const vec3 da = tri.v0 - ray.origin, db = tri.v1 - ray.origin, dc = tri.v2 - ray.origin;
+  const float a[3] = {da.x, da.y, da.z};
+  const float b[3] = {db.x, db.y, db.z};
+  const float c[3] = {dc.x, dc.y, dc.z};
   const float ax = a[ray.kx] - ray.shear_x * a[ray.kz];
   const float ay = a[ray.ky] - ray.shear_y * a[ray.kz];
   const float bx = b[ray.kx] - ray.shear_x * b[ray.kz];
