@@ -1,5 +1,6 @@
 #include "accel/builder.h"
 #include "accel/bvh_validate.h"
+#include "accel/refit.h"
 #include "accel/tlas.h"
 #include "accel/tlas_trace.h"
 #include "accel/trace.h"
@@ -163,6 +164,37 @@ TEST_P(AccelTlas, RefitAfterMovingInstancesMatchesARebuild) {
   // Same instances, same BLASes, same object-space rays: bit-identical answers.
   for (size_t i = 0; i < rays.size(); ++i)
     ASSERT_TRUE(testing::same_closest_hit(rebuilt_hits[i], refit_hits[i])) << "ray " << i;
+}
+
+TEST_P(AccelTlas, DeformingBlasRefitThenTlasRefitMatchesFullRebuild) {
+  // The design's case: a deforming mesh refits its BLAS in place (the Blas view stays valid, the
+  // node array is not reallocated), then the TLAS refits over the new BLAS root box.
+  TwoLevelScene scene(57);
+  Tlas tlas = build_tlas(scene.blases, scene.instances, GetParam());
+  std::mt19937 rng(58);
+  std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+  for (vec3& p : scene.meshes[0].positions) p += vec3(u(rng), u(rng), 2.0f * u(rng));
+  refit(scene.blas_bvhs[0], scene.meshes[0].view());
+  refit_tlas(tlas, scene.blases);
+
+  std::vector<Bvh> rebuilt_bvhs;
+  std::vector<Blas> rebuilt_blases;
+  for (const TestMesh& mesh : scene.meshes) rebuilt_bvhs.push_back(build_bvh(BvhBuilder::sah, mesh.view()));
+  for (size_t i = 0; i < scene.meshes.size(); ++i)
+    rebuilt_blases.push_back(make_blas(rebuilt_bvhs[i], scene.meshes[i].view()));
+  const Tlas rebuilt = build_tlas(rebuilt_blases, scene.instances, GetParam());
+
+  scene.flatten();
+  const std::vector<Ray> rays = testing::make_random_rays(scene.flat, 59, 10000);
+  std::vector<Hit> refit_hits(rays.size()), rebuilt_hits(rays.size());
+  trace_closest(tlas, scene.blases, rays, refit_hits);
+  trace_closest(rebuilt, rebuilt_blases, rays, rebuilt_hits);
+  size_t hits = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    ASSERT_TRUE(testing::same_closest_hit(rebuilt_hits[i], refit_hits[i])) << "ray " << i;
+    hits += refit_hits[i].valid() ? 1 : 0;
+  }
+  EXPECT_GT(hits, rays.size() / 4);
 }
 
 INSTANTIATE_TEST_SUITE_P(Accel, AccelTlas, ::testing::ValuesIn(kAllBvhBuilders),

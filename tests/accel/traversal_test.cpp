@@ -161,6 +161,22 @@ TEST(Traversal, HitReportsOriginalTriangleIndexAndInstanceZero) {
   }
 }
 
+TEST(Traversal, PreGatheredSoupGivesTheSameHitsAsIndexed) {
+  const TestMesh indexed = testing::make_random_soup(35, 1500);
+  std::vector<vec3> gathered;
+  for (uint32_t index : indexed.indices) gathered.push_back(indexed.positions[index]);
+  const TriangleMesh soup = make_triangle_soup(gathered);
+  ASSERT_EQ(soup.triangle_count, indexed.triangle_count());
+  const Bvh bvh = build_bvh(BvhBuilder::sah, soup);
+  const std::vector<Ray> rays = testing::make_random_rays(indexed, 36, 10000);
+  std::vector<Hit> hits(rays.size());
+  trace_closest(bvh, soup, rays, hits);
+  const TriangleMesh indexed_view = indexed.view();
+  for (size_t i = 0; i < rays.size(); ++i)
+    ASSERT_TRUE(testing::same_closest_hit(testing::brute_force_closest(indexed_view, rays[i]), hits[i])) << i;
+  EXPECT_THROW(make_triangle_soup(std::span(gathered).first(4)), Error);
+}
+
 TEST(Traversal, EmptyBvhMissesEverything) {
   const TestMesh empty;
   const TriangleMesh view = empty.view();
