@@ -1,6 +1,7 @@
 #include "accel/build_sah.h"
 
 #include "accel/primitive_bounds.h"
+#include "accel/ray.h"
 #include "accel/top_down_builder.h"
 #include "core/error.h"
 
@@ -30,8 +31,10 @@ struct BinMapping {
 
   uint32_t bin(const vec3& centroid, int axis) const {
     const float position = (centroid[axis] - origin[axis]) * scale[axis];
-    const auto index = static_cast<int64_t>(position);
-    return static_cast<uint32_t>(std::clamp<int64_t>(index, 0, bin_count - 1));
+    // Clamped in float before the conversion (converting an out-of-range float is undefined); the
+    // largest centroid lands exactly on bin_count and belongs to the last bin.
+    if (!(position > 0.0f)) return 0;
+    return position < static_cast<float>(bin_count - 1) ? static_cast<uint32_t>(position) : bin_count - 1;
   }
 };
 
@@ -68,7 +71,10 @@ std::optional<uint32_t> sah_policy(const detail::SplitContext& context, const de
   const vec3 extent = range.centroid_box.extent();
   BinMapping mapping{range.centroid_box.min, vec3(0.0f), bin_count};
   for (int axis = 0; axis < 3; ++axis)
-    if (extent[axis] > 0.0f) mapping.scale[axis] = static_cast<float>(bin_count) / extent[axis];
+    if (extent[axis] > 0.0f) {
+      const float scale = static_cast<float>(bin_count) / extent[axis];
+      if (scale < kInfinity) mapping.scale[axis] = scale;  // a subnormal extent is as good as none
+    }
   if (mapping.scale == vec3(0.0f)) return std::nullopt;  // all centroids coincide: no SAH split exists
 
   const Bins bins = fill_bins(context, range, mapping);
