@@ -1,0 +1,45 @@
+#include "accel/builder.h"
+
+#include "accel/build_median.h"
+#include "accel/build_none.h"
+#include "accel/build_sah.h"
+#include "accel/primitive_bounds.h"
+#include "core/error.h"
+
+#include <chrono>
+
+namespace glint::accel {
+
+std::string_view builder_name(BvhBuilder builder) {
+  switch (builder) {
+    case BvhBuilder::none: return "none";
+    case BvhBuilder::median: return "median";
+    case BvhBuilder::sah: return "sah";
+  }
+  return "unknown";
+}
+
+BvhBuilder parse_bvh_builder(std::string_view name) {
+  for (BvhBuilder builder : kAllBvhBuilders)
+    if (builder_name(builder) == name) return builder;
+  fail("accel: unknown BVH builder '{}' (known: none, median, sah)", name);
+}
+
+Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
+  switch (builder) {
+    case BvhBuilder::none: return build_none(input, options);
+    case BvhBuilder::median: return build_median(input, options);
+    case BvhBuilder::sah: return build_sah(input, options);
+  }
+  fail("accel: invalid BvhBuilder value {}", static_cast<int>(builder));
+}
+
+Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const PrimitiveBounds bounds = triangle_bounds(mesh);
+  Bvh bvh = build_bvh(builder, bounds.input(), options);
+  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return bvh;
+}
+
+}  // namespace glint::accel

@@ -1,0 +1,24 @@
+#pragma once
+// Picking a builder by name, for callers (CLI, benchmarks, tests) that iterate over the menu.
+#include "accel/build_options.h"
+#include "accel/bvh.h"
+#include "accel/triangle_mesh.h"
+
+#include <span>
+#include <string_view>
+
+namespace glint::accel {
+
+enum class BvhBuilder { none, median, sah };
+
+inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none, BvhBuilder::median, BvhBuilder::sah};
+
+std::string_view builder_name(BvhBuilder builder);
+// Inverse of builder_name; glint::Error listing the known names otherwise.
+BvhBuilder parse_bvh_builder(std::string_view name);
+
+Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options = {});
+// Convenience for a BLAS: bounds the triangles first (that time is included in build_ms).
+Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options = {});
+
+}  // namespace glint::accel
