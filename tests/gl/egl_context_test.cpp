@@ -8,6 +8,8 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include "support/scoped_env.h"
+
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -18,24 +20,7 @@ namespace {
 
 using GlContext = testing::GlTest;
 
-// Sets an environment variable for one scope and restores the previous value (or its absence).
-class ScopedEnv {
-public:
-  ScopedEnv(const char* name, const char* value) : name_(name) {
-    if (const char* old = std::getenv(name)) previous_ = old;
-    ::setenv(name, value, 1);
-  }
-  ~ScopedEnv() {
-    if (previous_) ::setenv(name_, previous_->c_str(), 1);
-    else ::unsetenv(name_);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-private:
-  const char* name_;
-  std::optional<std::string> previous_;
-};
+using testing::ScopedEnv;
 
 // Clears `framebuffer`'s first attachment to `colour` and returns its top-left pixel.
 glm::u8vec4 clear_and_read(const GlFramebuffer& framebuffer, const glm::vec4& colour) {

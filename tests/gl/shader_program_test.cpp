@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/error_of.h"
+
 #include "support/test_paths.h"
 
 #include <fstream>
@@ -16,14 +18,7 @@ namespace {
 
 using GlShaderProgram = testing::GlTest;
 
-std::string error_of(const auto& action) {
-  try {
-    action();
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
+using testing::error_of;
 
 TEST(GlShaderLog, FindsTheLineInMesaNvidiaAndAmdLogs) {
   EXPECT_EQ(parse_glsl_error_line("0:12(3): error: syntax error, unexpected '}'\n"), 12);

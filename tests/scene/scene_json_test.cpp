@@ -9,6 +9,8 @@
 #include "scene/load_scene.h"
 #include "scene/scene_json_builder.h"
 #include "scene/scene_json_parser.h"
+#include "support/error_of.h"
+#include "support/scoped_env.h"
 #include "support/temp_folder.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,6 +28,8 @@ namespace {
 
 using testing::GltfBuilder;
 using testing::TempFolder;
+using testing::ScopedEnv;
+using testing::error_of;
 using nlohmann::json;
 
 // A one-triangle glTF (vertices (0,0,0), (1,0,0), (0,1,0)) whose material is called `material`, plus a
@@ -39,17 +43,6 @@ std::string triangle_gltf(const std::string& material) {
   return gltf.gltf_text();
 }
 
-// The error text of `action`, or "" (and a test failure) when it does not throw a glint::Error.
-template <typename Action>
-std::string error_of(Action&& action) {
-  try {
-    action();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a glint::Error";
-  return {};
-}
 
 std::string parse_error(const std::string& text) {
   return error_of([&] { parse_scene_description(text, "scene.json"); });
@@ -63,25 +56,6 @@ void expect_near(const vec3& actual, const vec3& expected) {
   EXPECT_NEAR(actual.z, expected.z, 1e-5f);
 }
 
-// Sets (or unsets, with nullopt) an environment variable for the object's lifetime, then restores it.
-class ScopedEnv {
-public:
-  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value) ::setenv(name, value->c_str(), 1);
-    else ::unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_) ::setenv(name_, old_->c_str(), 1);
-    else ::unsetenv(name_);
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
 
 // ---- parsing (no mesh file is read) ----
 
