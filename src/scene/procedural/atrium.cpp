@@ -17,6 +17,37 @@ namespace {
 
 constexpr int kTextureSize = 512;  // like the paper's textures
 
+// Meshes the creatures of one kind in placement order. The first searches the grid resolution for
+// its vertex target; its siblings start from that cell size scaled by their relative size, which
+// usually hits the target with one mesh.
+template <typename Pose>
+class CreatureMesher {
+public:
+  CreatureMesher(Pose (*pose_of)(int), BlendedShape (*shape_of)(const Pose&), std::size_t target_vertices,
+                 std::uint32_t material, const char* name_prefix)
+      : pose_of_(pose_of), shape_of_(shape_of), target_vertices_(target_vertices), material_(material),
+        name_prefix_(name_prefix) {}
+
+  Mesh next(int variant) {
+    const Pose pose = pose_of_(variant);
+    const float reference_scale = pose_of_(0).scale;
+    const std::string name = name_prefix_ + "-" + std::to_string(count_++);
+    CreatureMesh result = creature_mesh(shape_of_(pose), target_vertices_, name, first_cell_ * pose.scale / reference_scale);
+    if (first_cell_ == 0.0f) first_cell_ = result.cell_size * reference_scale / pose.scale;
+    result.mesh.material = material_;
+    return std::move(result.mesh);
+  }
+
+private:
+  Pose (*pose_of_)(int);
+  BlendedShape (*shape_of_)(const Pose&);
+  std::size_t target_vertices_;
+  std::uint32_t material_;
+  std::string name_prefix_;
+  float first_cell_ = 0.0f;
+  int count_ = 0;
+};
+
 std::uint32_t add_material(Scene& scene, Material material) {
   scene.materials.push_back(std::move(material));
   return static_cast<std::uint32_t>(scene.materials.size() - 1);
@@ -66,31 +97,18 @@ void add_creatures(Scene& scene, AtriumDetail detail) {
   const std::uint32_t dinosaur_material = add_material(scene, dinosaur);
 
   const AtriumCounts targets = atrium_creature_targets(detail);
-  // The first creature of each kind searches the grid resolution; its siblings start from its cell
-  // size scaled by their relative size, which usually hits the target with one mesh.
-  float armadillo_cell = 0.0f, dinosaur_cell = 0.0f;
-  int armadillo_count = 0, dinosaur_count = 0;
+  CreatureMesher<ArmadilloPose> armadillos(armadillo_pose, armadillo_shape, targets.armadillo_vertices,
+                                           armadillo_material, kArmadilloPrefix);
+  CreatureMesher<DinosaurPose> dinosaurs(dinosaur_pose, dinosaur_shape, targets.dinosaur_vertices, dinosaur_material,
+                                         kDinosaurPrefix);
   for (const atrium::CreaturePlacement& placement : atrium::creature_placements()) {
-    const bool is_dinosaur = placement.kind == atrium::CreaturePlacement::Kind::dinosaur;
     Mesh mesh;
-    if (is_dinosaur) {
-      const DinosaurPose pose = dinosaur_pose(placement.variant);
-      const std::string name = std::string(kDinosaurPrefix) + "-" + std::to_string(dinosaur_count++);
-      CreatureMesh result = creature_mesh(dinosaur_shape(pose), targets.dinosaur_vertices, name,
-                                          dinosaur_cell * pose.scale / dinosaur_pose(0).scale);
-      if (dinosaur_cell == 0.0f) dinosaur_cell = result.cell_size * dinosaur_pose(0).scale / pose.scale;
-      mesh = std::move(result.mesh);
-      mesh.material = dinosaur_material;
+    if (placement.kind == atrium::CreaturePlacement::Kind::dinosaur) {
+      mesh = dinosaurs.next(placement.variant);
       mesh.deformable = true;
-      mesh.deform = dinosaur_deform(pose);
+      mesh.deform = dinosaur_deform(dinosaur_pose(placement.variant));
     } else {
-      const ArmadilloPose pose = armadillo_pose(placement.variant);
-      const std::string name = std::string(kArmadilloPrefix) + "-" + std::to_string(armadillo_count++);
-      CreatureMesh result = creature_mesh(armadillo_shape(pose), targets.armadillo_vertices, name,
-                                          armadillo_cell * pose.scale / armadillo_pose(0).scale);
-      if (armadillo_cell == 0.0f) armadillo_cell = result.cell_size * armadillo_pose(0).scale / pose.scale;
-      mesh = std::move(result.mesh);
-      mesh.material = armadillo_material;
+      mesh = armadillos.next(placement.variant);
     }
     const mat4 transform = glm::rotate(glm::translate(mat4(1.0f), vec3(placement.position.x, 0.0f, placement.position.y)),
                                        glm::radians(placement.yaw_degrees), vec3(0, 1, 0));
