@@ -48,9 +48,10 @@ SineDeformer::SineDeformer(const Mesh& rest_mesh, SineDeform parameters)
   std::vector<std::size_t> cursor(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
   for (std::size_t corner = 0; corner < indices_.size(); ++corner)
     vertex_triangles_[cursor[indices_[corner]]++] = static_cast<std::uint32_t>(corner / 3);
+  face_normals_.resize(indices_.size() / 3);
 }
 
-void SineDeformer::apply(Mesh& mesh, float time_seconds) const {
+void SineDeformer::apply(Mesh& mesh, float time_seconds) {
   if (mesh.positions.size() != rest_positions_.size())
     fail("mesh '{}': the sine deformer was built for {} vertices, the mesh has {}", mesh_name_,
          rest_positions_.size(), mesh.positions.size());
@@ -69,7 +70,7 @@ void SineDeformer::apply(Mesh& mesh, float time_seconds) const {
 
   // Smooth normals as compute_smooth_normals makes them (area-weighted face sum, +y where it
   // vanishes), but gathered per vertex so both loops run in parallel without races.
-  std::vector<vec3> face_normals(indices_.size() / 3);
+  std::vector<vec3>& face_normals = face_normals_;
   parallel_range(face_normals.size(), [&](std::size_t t) {
     const vec3 a = mesh.positions[indices_[3 * t]], b = mesh.positions[indices_[3 * t + 1]],
                c = mesh.positions[indices_[3 * t + 2]];
@@ -96,7 +97,7 @@ SceneDeformers::SceneDeformers(const Scene& scene)
   }
 }
 
-std::vector<std::uint32_t> SceneDeformers::apply(Scene& scene, int frame) const {
+std::vector<std::uint32_t> SceneDeformers::apply(Scene& scene, int frame) {
   if (frame < 0) fail("deformers: frame must be >= 0, got {}", frame);
   if (scene.meshes.size() != scene_mesh_count_)
     fail("deformers: built for a scene with {} meshes, given one with {}", scene_mesh_count_, scene.meshes.size());

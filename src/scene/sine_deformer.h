@@ -20,7 +20,8 @@ public:
   // Overwrites mesh.positions and mesh.normals with the pose at `time_seconds`; indices, UVs and
   // everything else are left alone. `mesh` must have the rest mesh's vertices and triangles; a
   // different vertex or index count throws glint::Error. Parallel (TBB) over vertices and triangles.
-  void apply(Mesh& mesh, float time_seconds) const;
+  // Not const: it reuses a face-normal buffer sized once, so the per-frame path allocates nothing.
+  void apply(Mesh& mesh, float time_seconds);
 
   const SineDeform& parameters() const { return parameters_; }
   std::size_t vertex_count() const { return rest_positions_.size(); }
@@ -36,6 +37,7 @@ private:
   // order makes the sums bit-identical to compute_smooth_normals' scatter.
   std::vector<std::size_t> vertex_offsets_;
   std::vector<std::uint32_t> vertex_triangles_;
+  std::vector<vec3> face_normals_;  // scratch for apply, one per triangle
 };
 
 // One SineDeformer per deformable mesh of a scene (Mesh::deformable with Mesh::deform set).
@@ -49,7 +51,7 @@ public:
   // meshes) at time frame / frames_per_second and returns the indices of the meshes it changed, in
   // ascending order: the dirty list for the acceleration structures. Throws for a negative frame or
   // a scene with a different number of meshes.
-  std::vector<std::uint32_t> apply(Scene& scene, int frame) const;
+  std::vector<std::uint32_t> apply(Scene& scene, int frame);
 
   // The indices of the meshes this deforms (what apply returns).
   const std::vector<std::uint32_t>& meshes() const { return mesh_indices_; }

@@ -86,7 +86,7 @@ TEST(SineDeformer, KeepsTrianglesIndicesAndUvs) {
 
 TEST(SineDeformer, IsDeterministicForAGivenTime) {
   const Mesh rest = grid(120, 4.0f);
-  const SineDeformer deformer(rest, wave());
+  SineDeformer deformer(rest, wave());
   Mesh mesh = rest;
   deformer.apply(mesh, 0.75f);
   const Mesh first = mesh;
@@ -124,7 +124,7 @@ TEST(SineDeformer, ZeroAmplitudeLeavesTheMeshUnchanged) {
 
 TEST(SineDeformer, RejectsAMismatchedMeshAndBadParameters) {
   const Mesh rest = grid(10, 1.0f);
-  const SineDeformer deformer(rest, wave());
+  SineDeformer deformer(rest, wave());
   Mesh other = grid(11, 1.0f);
   EXPECT_THROW(deformer.apply(other, 0.0f), Error);
   Mesh fewer_triangles = rest;
@@ -161,7 +161,7 @@ TEST(SineDeformScene, DeformsExactlyTheDeformableMeshesAtFrameOverFps) {
   scene.walkthrough.frames_per_second = 30.0f;
   const Scene rest = scene;
 
-  const SceneDeformers deformers(scene);
+  SceneDeformers deformers(scene);
   EXPECT_EQ(deformers.meshes(), (std::vector<std::uint32_t>{1, 4}));
   const std::vector<std::uint32_t> dirty = deformers.apply(scene, 45);  // t = 1.5 s
   EXPECT_EQ(dirty, (std::vector<std::uint32_t>{1, 4}));
@@ -182,7 +182,7 @@ TEST(SineDeformScene, RejectsBadFramesAndScenes) {
   scene.meshes.push_back(grid(4, 1.0f));
   scene.meshes.back().deformable = true;
   scene.meshes.back().deform = wave();
-  const SceneDeformers deformers(scene);
+  SceneDeformers deformers(scene);
   EXPECT_THROW((void)deformers.apply(scene, -1), Error);
   Scene bigger = scene;
   bigger.meshes.push_back(grid(4, 1.0f));
@@ -192,7 +192,7 @@ TEST(SineDeformScene, RejectsBadFramesAndScenes) {
 
   Scene none;
   none.meshes.push_back(grid(4, 1.0f));
-  const SceneDeformers nothing(none);
+  SceneDeformers nothing(none);
   EXPECT_TRUE(nothing.empty());
   EXPECT_TRUE(nothing.apply(none, 10).empty());
 }
