@@ -1,0 +1,37 @@
+#include "render/frame_constants.h"
+
+#include "core/error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+
+namespace glint::render {
+
+vec2 clip_range_for(const Aabb& world_bounds) {
+  const float diagonal = world_bounds.empty() ? 100.0f : glm::length(world_bounds.extent());
+  const float far_plane = std::max(2.0f * diagonal, 1.0f);
+  const float near_plane = std::max(far_plane * 1e-4f, 0.01f);
+  return {near_plane, far_plane};
+}
+
+FrameConstants make_frame_constants(const Scene& scene, const FrameState& frame, int width, int height) {
+  if (width <= 0 || height <= 0) fail("frame constants: invalid viewport {}x{}", width, height);
+  const vec2 clip = clip_range_for(scene.world_bounds());
+  FrameConstants constants;
+  constants.view = frame.camera.view();
+  constants.projection = glm::perspective(glm::radians(frame.camera.fov_y_degrees),
+                                          static_cast<float>(width) / static_cast<float>(height), clip.x, clip.y);
+  constants.view_projection = constants.projection * constants.view;
+  constants.inverse_view = glm::inverse(constants.view);
+  constants.inverse_projection = glm::inverse(constants.projection);
+  constants.camera_position = vec4(frame.camera.position, 1.0f);
+  constants.light_position_range = vec4(frame.light_position, scene.light.range);
+  constants.light_color_intensity = vec4(scene.light.color, scene.light.intensity);
+  constants.sky_color = vec4(scene.sky_color, 1.0f);
+  constants.near_far = vec4(clip.x, clip.y, 0.0f, 0.0f);
+  constants.viewport = glm::ivec4(width, height, frame.frame, 0);
+  return constants;
+}
+
+}  // namespace glint::render

@@ -1,0 +1,49 @@
+#pragma once
+// Per-frame values every pass reads: camera, projection, light, sky, viewport. One std140 uniform
+// block at binding kFrameConstantsBinding, declared identically in every shader that needs it:
+//
+//   layout(std140, binding = 0) uniform FrameConstants {
+//     mat4 view; mat4 projection; mat4 view_projection; mat4 inverse_view; mat4 inverse_projection;
+//     vec4 camera_position;        // xyz world, w unused
+//     vec4 light_position_range;   // xyz world, w = PointLight::range
+//     vec4 light_color_intensity;  // rgb linear colour, w = intensity
+//     vec4 sky_color;              // rgb linear, w unused
+//     vec4 near_far;               // x near, y far (world units), zw unused
+//     ivec4 viewport;              // x width, y height, z frame number, w unused
+//   };
+#include "core/math.h"
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <type_traits>
+
+namespace glint::render {
+
+inline constexpr unsigned kFrameConstantsBinding = 0;
+
+struct FrameConstants {
+  mat4 view{1.0f};
+  mat4 projection{1.0f};
+  mat4 view_projection{1.0f};
+  mat4 inverse_view{1.0f};
+  mat4 inverse_projection{1.0f};
+  vec4 camera_position{0.0f};
+  vec4 light_position_range{0.0f};
+  vec4 light_color_intensity{0.0f};
+  vec4 sky_color{0.0f};
+  vec4 near_far{0.0f};
+  glm::ivec4 viewport{0};
+};
+static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants) == 5 * 64 + 6 * 16,
+              "FrameConstants must match the std140 block above");
+
+// Near and far clip distances that enclose `world_bounds` from any camera inside or near it: far is
+// the box diagonal plus margin, near a small fraction of far (kept >= 1 cm for depth precision).
+vec2 clip_range_for(const Aabb& world_bounds);
+
+// The constants of one frame: the camera's view and an OpenGL perspective projection (depth -1..1,
+// aspect width / height, the camera's vertical field of view), the light at the frame's position.
+FrameConstants make_frame_constants(const Scene& scene, const FrameState& frame, int width, int height);
+
+}  // namespace glint::render
