@@ -25,6 +25,13 @@ public:
   // with a hole in the middle can never be committed.
   int error() const { return error_; }
 
+  // Called when the descriptor is closed: later writes through the stream fail (badbit) instead of
+  // going to whatever file reuses the descriptor's number.
+  void descriptor_closed() {
+    fd_ = -1;
+    if (error_ == 0) error_ = EBADF;
+  }
+
 protected:
   int_type overflow(int_type ch) override {
     if (!drain()) return traits_type::eof();
@@ -169,6 +176,7 @@ void AtomicFileWriter::commit() {
   // close() is where some file systems (NFS) report a failed write.
   if (::close(state.fd) != 0 && error == 0) error = errno;
   state.fd = -1;
+  state.buffer.descriptor_closed();
   if (error != 0 || stream_failed) {
     ::unlink(state.temporary.c_str());
     fail("cannot write '{}': {}", state.path.string(), error != 0 ? std::strerror(error) : "the output stream failed");

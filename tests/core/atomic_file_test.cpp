@@ -154,6 +154,9 @@ TEST(AtomicFile, CommittingTwiceOrWritingAfterCommitIsAnError) {
   writer.commit();
   EXPECT_NE(error_of([&] { writer.commit(); }).find(path.string()), std::string::npos);
   EXPECT_NE(error_of([&] { writer.write("two"); }).find(path.string()), std::string::npos);
+  // The stream fails too, rather than writing into whatever file reuses the closed descriptor.
+  writer.stream() << binary_bytes(100'000);
+  EXPECT_TRUE(writer.stream().bad());
   EXPECT_EQ(read_text(path), "one");
 }
 
