@@ -6,6 +6,7 @@
 #include "support/error_of.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <numeric>
@@ -153,6 +154,16 @@ TEST(Ssim, ColourSsimUsesRec709LumaAndEachChannel) {
   EXPECT_NEAR(s.channel[0], luminance_term(200, 100), 1e-9);
   EXPECT_NEAR(s.channel[1], 1.0, 1e-12);
   EXPECT_NEAR(s.channel[2], luminance_term(50, 100), 1e-9);
+}
+
+TEST(Ssim, ResultDoesNotDependOnTheNumberOfThreads) {
+  const Plane a = random_plane(300, 200, 38, 0.0, 255.0);
+  const Plane b = plus_noise(a, random_plane(300, 200, 39, -1.0, 1.0), 30.0);
+  const SsimResult parallel = ssim(a, b);
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  const SsimResult serial = ssim(a, b);
+  EXPECT_EQ(parallel.mean, serial.mean);
+  EXPECT_EQ(parallel.map.pixels, serial.map.pixels);
 }
 
 TEST(Ssim, IsSymmetricInItsArguments) {
