@@ -1,5 +1,6 @@
 #include "app/compare_command.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "metrics/error_heatmap.h"
@@ -7,15 +8,14 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <filesystem>
 
 namespace glint {
 namespace {
@@ -63,32 +63,6 @@ nlohmann::json comparison_json(const metrics::ImageComparison& c, const std::str
   };
 }
 
-// Written next to the final file and renamed over it, so a crash never leaves half a JSON file.
-void write_text_atomically(const fs::path& path, const std::string& text) {
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code error;
-  if (!fs::is_directory(folder, error))
-    fail("cannot write JSON '{}': folder '{}' does not exist", path.string(), folder.string());
-  fs::path temporary = path;
-  temporary += ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) fail("cannot write JSON '{}': {}", path.string(), std::strerror(errno));
-    out << text;
-    out.close();
-    if (!out) {
-      fs::remove(temporary, error);
-      fail("cannot write JSON '{}': write failed", path.string());
-    }
-  }
-  fs::rename(temporary, path, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    fail("cannot write JSON '{}': {}", path.string(), error.message());
-  }
-}
-
 std::string psnr_text(double db) { return std::isinf(db) ? std::string("inf") : fmt::format("{:.2f}", db); }
 
 void print_table(const metrics::ImageComparison& c, const std::string& test, const std::string& reference) {
@@ -134,7 +108,7 @@ int run_compare_command(const CompareOptions& options) {
 
   const metrics::ImageComparison comparison = metrics::compare_images(test, reference, test_path, reference_path);
   if (!options.json.empty())
-    write_text_atomically(options.json, comparison_json(comparison, test_path, reference_path).dump(2) + "\n");
+    write_file_atomically(options.json, comparison_json(comparison, test_path, reference_path).dump(2) + "\n");
   if (!options.heatmap.empty()) {
     metrics::HeatmapOptions heatmap_options;
     heatmap_options.full_scale = options.heatmap_scale;
