@@ -1,0 +1,86 @@
+#include "raster_test_scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace glint::testing {
+
+Scene make_empty_test_scene(vec3 light) {
+  Scene scene;
+  scene.name = "raster-test";
+  scene.source = "raster test";
+  scene.light.position = light;
+  scene.light.range = 10.0f;
+  scene.light.intensity = 20.0f;
+  scene.light.color = vec3(1.0f, 0.9f, 0.8f);
+  scene.sky_color = vec3(0.5f, 0.6f, 0.7f);
+  scene.walkthrough.camera.points = {vec3(0.0f, 1.0f, 5.0f), vec3(1.0f, 1.0f, 5.0f)};
+  scene.walkthrough.frame_count = 10;
+  return scene;
+}
+
+std::uint32_t add_material(Scene& scene, vec3 diffuse, float reflectivity, int texture) {
+  Material material;
+  material.name = "material" + std::to_string(scene.materials.size());
+  material.diffuse = diffuse;
+  material.reflectivity = reflectivity;
+  material.roughness = 0.25f;
+  material.diffuse_texture = texture;
+  material.specular = vec3(0.3f);
+  material.specular_exponent = 20.0f;
+  scene.materials.push_back(material);
+  return static_cast<std::uint32_t>(scene.materials.size() - 1);
+}
+
+std::uint32_t add_quad(Scene& scene, vec3 origin, vec3 edge_u, vec3 edge_v, std::uint32_t material) {
+  Mesh mesh;
+  mesh.name = "quad" + std::to_string(scene.meshes.size());
+  mesh.positions = {origin, origin + edge_u, origin + edge_u + edge_v, origin + edge_v};
+  mesh.normals.assign(4, glm::normalize(glm::cross(edge_u, edge_v)));
+  mesh.uvs = {vec2(0.0f, 0.0f), vec2(1.0f, 0.0f), vec2(1.0f, 1.0f), vec2(0.0f, 1.0f)};
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  mesh.material = material;
+  scene.meshes.push_back(mesh);
+  Instance instance;
+  instance.name = mesh.name;
+  instance.mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  scene.instances.push_back(instance);
+  return instance.mesh;
+}
+
+FrameState look_at(vec3 eye, vec3 target, vec3 light) {
+  FrameState frame;
+  frame.camera.position = eye;
+  frame.camera.target = target;
+  frame.camera.fov_y_degrees = 60.0f;
+  frame.light_position = light;
+  return frame;
+}
+
+vec3 pixel_ray(const render::FrameConstants& constants, int x, int y) {
+  const float width = static_cast<float>(constants.viewport.x), height = static_cast<float>(constants.viewport.y);
+  const vec2 ndc((static_cast<float>(x) + 0.5f) / width * 2.0f - 1.0f,
+                 1.0f - (static_cast<float>(y) + 0.5f) / height * 2.0f);
+  const mat4 inverse = glm::inverse(constants.view_projection);
+  const vec4 near_point = inverse * vec4(ndc, -1.0f, 1.0f);
+  const vec4 far_point = inverse * vec4(ndc, 1.0f, 1.0f);
+  return glm::normalize(vec3(far_point) / far_point.w - vec3(near_point) / near_point.w);
+}
+
+std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3 edge_u, vec3 edge_v) {
+  const vec3 normal = glm::cross(edge_u, edge_v);
+  const float denominator = glm::dot(normal, direction);
+  if (std::abs(denominator) < 1e-12f) return std::nullopt;
+  const float t = glm::dot(normal, quad_origin - origin) / denominator;
+  if (t <= 0.0f) return std::nullopt;
+  const vec3 p = origin + t * direction;
+  // Coordinates of p in the (edge_u, edge_v) frame.
+  const vec3 d = p - quad_origin;
+  const float uu = glm::dot(edge_u, edge_u), uv = glm::dot(edge_u, edge_v), vv = glm::dot(edge_v, edge_v);
+  const float du = glm::dot(d, edge_u), dv = glm::dot(d, edge_v);
+  const float det = uu * vv - uv * uv;
+  const float s = (du * vv - dv * uv) / det, r = (dv * uu - du * uv) / det;
+  if (s < 0.0f || s > 1.0f || r < 0.0f || r > 1.0f) return std::nullopt;
+  return p;
+}
+
+}  // namespace glint::testing
