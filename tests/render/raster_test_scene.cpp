@@ -83,4 +83,28 @@ std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3
   return p;
 }
 
+Scene make_floor_with_occluders(std::vector<QuadGeometry>& occluders) {
+  Scene scene = make_empty_test_scene(vec3(0.0f, 4.0f, 0.0f));
+  const std::uint32_t floor = add_material(scene, vec3(0.7f, 0.6f, 0.5f), 0.3f);
+  const std::uint32_t lid = add_material(scene, vec3(0.2f, 0.4f, 0.9f));
+  scene.materials[lid].emissive = vec3(0.2f, 0.1f, 0.0f);
+  const std::uint32_t wall = add_material(scene, vec3(0.9f, 0.9f, 0.2f));
+  add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
+  occluders = {{vec3(-1.0f, 2.0f, 1.0f), vec3(2.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -2.0f)},
+               {vec3(3.0f, 0.0f, -1.5f), vec3(0.0f, 0.0f, 3.0f), vec3(0.0f, 1.0f, 0.0f)}};
+  add_quad(scene, occluders[0].origin, occluders[0].edge_u, occluders[0].edge_v, lid);
+  add_quad(scene, occluders[1].origin, occluders[1].edge_u, occluders[1].edge_v, wall);
+  return scene;
+}
+
+bool light_blocked(vec3 point, vec3 light, const std::vector<QuadGeometry>& quads) {
+  const float distance = glm::length(light - point);
+  const vec3 direction = (light - point) / distance;
+  for (const QuadGeometry& quad : quads) {
+    const auto hit = hit_quad(point, direction, quad.origin, quad.edge_u, quad.edge_v);
+    if (hit && glm::length(*hit - point) < distance) return true;
+  }
+  return false;
+}
+
 }  // namespace glint::testing

@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 
 #include <optional>
+#include <vector>
 
 namespace glint::testing {
 
@@ -29,5 +30,17 @@ vec3 pixel_ray(const render::FrameConstants& constants, int x, int y);
 
 // Where the ray from `origin` along `direction` meets the quad, if it does (t > 0).
 std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3 edge_u, vec3 edge_v);
+
+struct QuadGeometry {
+  vec3 origin, edge_u, edge_v;
+};
+
+// A 40 x 40 floor (y = 0, material 0, normal up) lit from (0, 4, 0), with two occluders:
+// a 2 x 2 horizontal quad at y = 2 over the origin (material 1, emissive) and a 3 wide, 1 high wall
+// standing on the floor at x = 3 facing the light (material 2). `occluders` receives their geometry.
+Scene make_floor_with_occluders(std::vector<QuadGeometry>& occluders);
+
+// Whether the segment from `point` to `light` crosses any of `quads`.
+bool light_blocked(vec3 point, vec3 light, const std::vector<QuadGeometry>& quads);
 
 }  // namespace glint::testing
