@@ -1,0 +1,27 @@
+#pragma once
+// GBufferPass: rasterises every instance of the GpuScene into the G-buffer.
+//   inputs:  GpuScene (vertices, instances, materials, texture array), FrameConstants UBO bound at
+//            kFrameConstantsBinding
+//   outputs: RasterTargets albedo_reflectivity, world_position (w = 1 geometry, 0 background),
+//            world_normal_roughness, material_id (index + 1, 0 background), depth
+// No face culling: scenes are open sheets, and back faces must be seen (SSR tells them by normal).
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/gpu_scene.h"
+#include "render/raster_targets.h"
+
+namespace glint::render {
+
+class GBufferPass {
+public:
+  explicit GBufferPass(const RasterTargets& targets);  // the targets must outlive the pass
+
+  void run(const GpuScene& scene);
+
+private:
+  const RasterTargets* targets_;
+  GlFramebuffer framebuffer_;
+  ShaderProgram program_;
+};
+
+}  // namespace glint::render

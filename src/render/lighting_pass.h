@@ -1,0 +1,28 @@
+#pragma once
+// LightingPass: direct lighting of the G-buffer (Blinn-Phong point light x shadow mask, ambient,
+// emissive; sky colour on background). Full screen; the formula is in shaders/lighting.frag.glsl.
+//   inputs:  RasterTargets albedo_reflectivity, world_position, world_normal_roughness, material_id,
+//            shadow_mask; GpuScene materials; FrameConstants UBO at kFrameConstantsBinding
+//   outputs: RasterTargets lit (kLitFormat, linear HDR radiance, a = 1)
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/gpu_scene.h"
+#include "render/raster_settings.h"
+#include "render/raster_targets.h"
+
+namespace glint::render {
+
+class LightingPass {
+public:
+  explicit LightingPass(const RasterTargets& targets);  // the targets must outlive the pass
+
+  void run(const GpuScene& scene, const RasterSettings& settings);
+
+private:
+  const RasterTargets* targets_;
+  GlFramebuffer framebuffer_;
+  GlVertexArray empty_vertex_array_;
+  ShaderProgram program_;
+};
+
+}  // namespace glint::render

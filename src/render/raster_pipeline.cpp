@@ -1,0 +1,74 @@
+#include "render/raster_pipeline.h"
+
+#include "core/error.h"
+#include "gl/gl_check.h"
+#include "render/render_targets.h"
+#include "render/texture_readback.h"
+
+#include <optional>
+
+namespace glint::render {
+namespace {
+
+const RasterSettings& validated(const RasterSettings& settings) {
+  settings.validate();
+  return settings;
+}
+
+GpuSceneOptions gpu_scene_options(const RasterSettings& settings) {
+  GpuSceneOptions options;
+  options.max_texture_layer_size = settings.max_texture_layer_size;
+  return options;
+}
+
+}  // namespace
+
+RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const RasterSettings& settings)
+    : scene_(&scene),
+      settings_(validated(settings)),
+      gpu_scene_(scene, gpu_scene_options(settings)),
+      targets_(width, height),
+      frame_constants_buffer_(create_buffer(sizeof(FrameConstants), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      gbuffer_(targets_),
+      shadow_cube_(settings.shadow_map_size),
+      shadow_mask_(targets_),
+      lighting_(targets_) {
+  check_gl("raster pipeline set-up");
+}
+
+void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
+  frame_constants_ = make_frame_constants(*scene_, frame, targets_.width, targets_.height);
+  glNamedBufferSubData(frame_constants_buffer_.id(), 0, sizeof(FrameConstants), &frame_constants_);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants_buffer_.id());
+
+  // A pass is timed only when there is a timer (PassScope cannot move, so it is emplaced in place).
+  std::optional<GpuTimer::PassScope> timed;
+  if (timer != nullptr) timed.emplace(*timer, "gbuffer");
+  gbuffer_.run(gpu_scene_);
+  timed.reset();
+  if (timer != nullptr) timed.emplace(*timer, "shadow");
+  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds());
+  shadow_mask_.run(shadow_cube_, settings_);
+  timed.reset();
+  if (timer != nullptr) timed.emplace(*timer, "light");
+  lighting_.run(gpu_scene_, settings_);
+}
+
+ImageRgbaF RasterPipeline::read_rgbaf(RasterOutput output) const {
+  const int w = targets_.width, h = targets_.height;
+  switch (output) {
+    case RasterOutput::AlbedoReflectivity: return read_texture_rgbaf(albedo_reflectivity(), kAlbedoReflectivityFormat, w, h);
+    case RasterOutput::WorldPosition: return read_texture_rgbaf(world_position(), kWorldPositionFormat, w, h);
+    case RasterOutput::WorldNormalRoughness:
+      return read_texture_rgbaf(world_normal_roughness(), kWorldNormalRoughnessFormat, w, h);
+    case RasterOutput::MaterialId: return read_texture_rgbaf(material_id(), kMaterialIdFormat, w, h);
+    case RasterOutput::Depth: return read_texture_rgbaf(depth(), kDepthFormat, w, h);
+    case RasterOutput::ShadowMask: return read_texture_rgbaf(shadow_mask(), kShadowMaskFormat, w, h);
+    case RasterOutput::Lit: return read_texture_rgbaf(lit(), kLitFormat, w, h);
+  }
+  fail("raster pipeline: unknown output {}", static_cast<int>(output));
+}
+
+ImageRgba8 RasterPipeline::read_rgba8(RasterOutput output) const { return quantize_to_rgba8(read_rgbaf(output)); }
+
+}  // namespace glint::render

@@ -1,0 +1,73 @@
+#pragma once
+// The raster half of the deferred renderer: G-buffer, shadow (cube map + mask), direct lighting.
+// Owns the GpuScene, the full-screen targets, the FrameConstants uniform buffer and the passes.
+// SSR, the ray-traced complement and resolve read the targets by texture id afterwards; the
+// FrameConstants UBO stays bound at kFrameConstantsBinding after render().
+//
+//   RasterPipeline raster(scene, 1280, 720, settings);
+//   raster.render(animation.at(frame), &timer);   // "gbuffer", "shadow", "light" in the timer
+//   ssr.run(raster.world_position(), ...);
+#include "core/image.h"
+#include "gl/gl_objects.h"
+#include "gl/gpu_timer.h"
+#include "render/frame_constants.h"
+#include "render/gbuffer_pass.h"
+#include "render/gpu_scene.h"
+#include "render/lighting_pass.h"
+#include "render/raster_settings.h"
+#include "render/raster_targets.h"
+#include "render/shadow_cube_pass.h"
+#include "render/shadow_mask_pass.h"
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+
+namespace glint::render {
+
+// Every image the pipeline writes, for readback and debug views.
+enum class RasterOutput { AlbedoReflectivity, WorldPosition, WorldNormalRoughness, MaterialId, Depth, ShadowMask, Lit };
+
+class RasterPipeline {
+public:
+  // Uploads `scene`, which must outlive the pipeline (each frame reads its light, sky and bounds;
+  // deforming callers update it and gpu_scene() together). Needs a current GL context.
+  RasterPipeline(const Scene& scene, int width, int height, const RasterSettings& settings = {});
+
+  // G-buffer, then shadow (cube map + mask, which needs this frame's G-buffer), then lighting. With
+  // a timer (inside its begin_frame/end_frame) the passes are timed as "gbuffer", "shadow", "light".
+  void render(const FrameState& frame, GpuTimer* timer = nullptr);
+
+  GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
+  GLuint world_position() const { return targets_.world_position.id(); }
+  GLuint world_normal_roughness() const { return targets_.world_normal_roughness.id(); }
+  GLuint material_id() const { return targets_.material_id.id(); }
+  GLuint depth() const { return targets_.depth.id(); }
+  GLuint shadow_mask() const { return targets_.shadow_mask.id(); }
+  GLuint lit() const { return targets_.lit.id(); }
+  GLuint shadow_cube_map() const { return shadow_cube_.cube_map(); }
+  GLuint frame_constants_buffer() const { return frame_constants_buffer_.id(); }
+  const FrameConstants& frame_constants() const { return frame_constants_; }  // of the last render()
+  GpuScene& gpu_scene() { return gpu_scene_; }
+  const GpuScene& gpu_scene() const { return gpu_scene_; }
+  const RasterSettings& settings() const { return settings_; }
+  int width() const { return targets_.width; }
+  int height() const { return targets_.height; }
+
+  // CPU copies of an output, top row first; see read_texture_rgbaf for one-channel images. They
+  // wait for the GPU: debug views and tests only. rgba8 clamps to 0..1 (no tone mapping).
+  ImageRgbaF read_rgbaf(RasterOutput output) const;
+  ImageRgba8 read_rgba8(RasterOutput output) const;
+
+private:
+  const Scene* scene_;
+  RasterSettings settings_;
+  GpuScene gpu_scene_;
+  RasterTargets targets_;
+  GlBuffer frame_constants_buffer_;
+  FrameConstants frame_constants_;
+  GBufferPass gbuffer_;
+  ShadowCubePass shadow_cube_;
+  ShadowMaskPass shadow_mask_;
+  LightingPass lighting_;
+};
+
+}  // namespace glint::render

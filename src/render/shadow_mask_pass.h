@@ -1,0 +1,29 @@
+#pragma once
+// ShadowMaskPass: per G-buffer pixel, is the point light visible? Full screen, PCF over the cube map.
+//   inputs:  RasterTargets world_position and world_normal_roughness, ShadowCubePass's cube map,
+//            FrameConstants UBO at kFrameConstantsBinding (light position)
+//   outputs: RasterTargets shadow_mask (kShadowMaskFormat: 1 lit, 0 shadowed, fractional at PCF
+//            edges, 1 for background)
+// Bias and normal offset are in cube texels at the receiver (see shaders/shadow_mask.frag.glsl).
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/raster_settings.h"
+#include "render/raster_targets.h"
+#include "render/shadow_cube_pass.h"
+
+namespace glint::render {
+
+class ShadowMaskPass {
+public:
+  explicit ShadowMaskPass(const RasterTargets& targets);  // the targets must outlive the pass
+
+  void run(const ShadowCubePass& cube, const RasterSettings& settings);
+
+private:
+  const RasterTargets* targets_;
+  GlFramebuffer framebuffer_;
+  GlVertexArray empty_vertex_array_;  // the full-screen triangle needs no attributes, but core GL needs one bound
+  ShaderProgram program_;
+};
+
+}  // namespace glint::render

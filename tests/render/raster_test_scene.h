@@ -1,0 +1,46 @@
+#pragma once
+// Tiny scenes built in code for the raster tests, and the CPU geometry the tests compare against.
+#include "core/image.h"
+#include "core/math.h"
+#include "render/frame_constants.h"
+#include "scene/camera_path.h"
+#include "scene/scene.h"
+
+#include <optional>
+#include <vector>
+
+namespace glint::testing {
+
+// A scene with no geometry yet, a valid walkthrough, the light at `light` (range 10, intensity 20).
+Scene make_empty_test_scene(vec3 light);
+
+// Adds a material and returns its index.
+std::uint32_t add_material(Scene& scene, vec3 diffuse, float reflectivity = 0.0f, int texture = -1);
+
+// Adds a parallelogram origin + s * edge_u + t * edge_v (s, t in 0..1) as its own mesh and
+// instance: normal cross(edge_u, edge_v) normalised, uv = (s, t), counter-clockwise seen from the
+// normal's side. Returns the mesh index.
+std::uint32_t add_quad(Scene& scene, vec3 origin, vec3 edge_u, vec3 edge_v, std::uint32_t material);
+
+// The camera at `eye` looking at `target` (60 degrees vertical), light at `light`.
+FrameState look_at(vec3 eye, vec3 target, vec3 light);
+
+// World-space direction of the ray through the centre of pixel (x, y), y counted from the top.
+vec3 pixel_ray(const render::FrameConstants& constants, int x, int y);
+
+// Where the ray from `origin` along `direction` meets the quad, if it does (t > 0).
+std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3 edge_u, vec3 edge_v);
+
+struct QuadGeometry {
+  vec3 origin, edge_u, edge_v;
+};
+
+// A 40 x 40 floor (y = 0, material 0, normal up) lit from (0, 4, 0), with two occluders:
+// a 2 x 2 horizontal quad at y = 2 over the origin (material 1, emissive) and a 3 wide, 1 high wall
+// standing on the floor at x = 3 facing the light (material 2). `occluders` receives their geometry.
+Scene make_floor_with_occluders(std::vector<QuadGeometry>& occluders);
+
+// Whether the segment from `point` to `light` crosses any of `quads`.
+bool light_blocked(vec3 point, vec3 light, const std::vector<QuadGeometry>& quads);
+
+}  // namespace glint::testing
