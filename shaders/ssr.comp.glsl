@@ -81,6 +81,16 @@ vec2 line_pixel_position(Line line, float s) {
 }
 float line_depth(Line line, float s) { return -(line.q0z + line.dqz * s) / (line.k0 + line.dk * s); }
 
+// The ray's depth range over one pixel along the major axis, centred on s.
+vec2 pixel_span(Line line, float s) {
+  const float half_pixel = 0.5 / stride;
+  const float a = line_depth(line, s - half_pixel), b = line_depth(line, s + half_pixel);
+  return vec2(min(a, b), max(a, b));
+}
+
+// How far a surface depth lies outside a depth range (0 when inside).
+float depth_gap(vec2 span, float surface) { return max(max(span.x - surface, surface - span.y), 0.0); }
+
 bool on_screen(vec2 p) { return all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, vec2(screen_size))); }
 
 // Marches one reflective pixel; writes the reflection it trusts into `result`.
@@ -146,17 +156,25 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   }
   if (hit_s < 0.0) return kFailed;  // out of steps
 
-  // Bisection on the last interval: keep the nearest sample point that is behind a surface by at
-  // most the thickness.
-  float lo = previous_s, hi = hit_s;
+  // Bisection on the last interval for the first position whose one-pixel depth range reaches a
+  // surface (within the thickness); with strides > 1 this finds the pixel the stride skipped over.
+  // The step's depth range reached half a step ahead, so the crossing may lie up to there.
+  float lo = previous_s, hi = min(hit_s + 0.5, last_s);
+  bool refined = false;
   for (int i = 0; i < refinement_steps; ++i) {
     const float mid = 0.5 * (lo + hi);
     const ivec2 mid_pixel = ivec2(line_pixel_position(line, mid));
-    const float depth = line_depth(line, mid);
+    const vec2 span = pixel_span(line, mid);
     const float surface = scene_depth(mid_pixel);
     // The origin's own pixel is never a hit (any point of the ray beyond it is "behind" it).
-    if (mid_pixel != pixel && depth >= surface && depth <= surface + thickness) hi = mid; else lo = mid;
+    if (mid_pixel != pixel && span.y >= surface && span.x <= surface + thickness) {
+      hi = mid;
+      refined = true;
+    } else {
+      lo = mid;
+    }
   }
+  if (!refined) hi = hit_s;  // no finer position found: keep the step that hit
   const vec2 hit_p = line_pixel_position(line, hi);
   const ivec2 hit_pixel = ivec2(hit_p);
 
@@ -167,7 +185,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   if (hit_pixel == pixel || distance_ws < self_hit_distance) return kFailed;  // self-intersection
   const vec3 hit_normal = imageLoad(world_normal, hit_pixel).xyz;
   if (dot(hit_normal, ray_ws) > 0.0) return kFailed;  // back face
-  const float depth_difference = abs(line_depth(line, hi) - scene_depth(hit_pixel));
+  const float depth_difference = depth_gap(pixel_span(line, hi), scene_depth(hit_pixel));
   const float confidence =
       (1.0 - smoothstep(0.0, thickness, depth_difference)) * edge_term(vec2(hit_pixel) + 0.5);
   if (confidence < confidence_threshold) return kFailed;
