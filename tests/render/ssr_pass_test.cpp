@@ -271,6 +271,39 @@ TEST_P(SsrPassTest, ReflectedBackFaceFailsAndTheFrontFaceIsHit) {
   }
 }
 
+// A box cut by the left screen border: hits in the edge fade band lose confidence and fail; without
+// the fade the same pixels are hits, and the fade never turns a failure into a hit.
+TEST_P(SsrPassTest, HitsInTheScreenEdgeBandFailOnlyWithTheEdgeFade) {
+  SyntheticScene scene;
+  scene.add_floor(50.0f, kFloorLit, 1.0f);
+  const int box = scene.add_box(vec3(-4.5f, 0.0f, -2.5f), vec3(-2.2f, 1.6f, -1.5f), kBoxLit, 0.0f);
+  SyntheticCamera camera;
+  camera.position = vec3(0.0f, 1.4f, 3.0f);
+  camera.target = vec3(0.0f, 0.5f, -1.0f);
+  SsrSettings with_fade = GetParam();
+  with_fade.edge_fade = 0.1f;  // a band of 4.8 pixels
+  SsrSettings without_fade = GetParam();
+  without_fade.edge_fade = 0.0f;
+  const SsrResult faded = run_ssr(scene, camera, with_fade);
+  const SsrResult plain = run_ssr(scene, camera, without_fade);
+  const float band = with_fade.edge_fade * kHeight;
+  int in_band = 0;
+  for (std::size_t i = 0; i < faded.mask.size(); ++i) {
+    if (!reflective(faded.cpu, i)) continue;
+    EXPECT_TRUE(faded.mask[i] == 1 || plain.mask[i] == 0) << "the edge fade created a hit at pixel " << i;
+    const auto hit = mirror_hit(scene, faded, i);
+    if (!is_object(scene, hit, box) || plain.mask[i] != 0) continue;
+    // Where the fade term alone is below the threshold the hit must fail.
+    const float column = std::floor(testing::project_to_pixels(faded.constants, hit->position).x) + 0.5f;
+    const float x = glm::clamp(column / band, 0.0f, 1.0f);
+    if (x * x * (3.0f - 2.0f * x) < 0.5f * with_fade.confidence_threshold) {
+      ++in_band;
+      EXPECT_EQ(faded.mask[i], 1) << "hit " << column << " px from the border must fail at pixel " << i;
+    }
+  }
+  EXPECT_GE(in_band, 5) << "the scene must put hits into the edge band";
+}
+
 SsrSettings fine_settings() {
   SsrSettings s;
   s.stride = 1.0f;
