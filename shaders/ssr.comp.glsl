@@ -106,6 +106,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   const float near_z = -near_far.x;
   float ray_length = max_distance;
   if (origin_vs.z + ray_vs.z * ray_length > near_z) ray_length = (near_z - origin_vs.z) / ray_vs.z;
+  if (!(ray_length > 0.0)) return kFailed;  // a surface at or before the near plane: nothing to march
   const vec3 end_vs = origin_vs + ray_vs * ray_length;
 
   const vec4 h0 = projection * vec4(origin_vs, 1.0);

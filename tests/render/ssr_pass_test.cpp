@@ -122,6 +122,9 @@ struct FloorAndBox {
   }
 };
 
+using SsrPassLimits = glint::testing::GlTest;
+using SsrPassErrors = glint::testing::GlTest;
+
 class SsrPassTest : public glint::testing::GlTest, public ::testing::WithParamInterface<SsrSettings> {};
 
 TEST_P(SsrPassTest, MirrorFloorReflectsTheBoxWithItsColourAndDistance) {
@@ -304,6 +307,48 @@ TEST_P(SsrPassTest, HitsInTheScreenEdgeBandFailOnlyWithTheEdgeFade) {
   EXPECT_GE(in_band, 5) << "the scene must put hits into the edge band";
 }
 
+// Running out of steps or of distance fails: with 3 steps only hits a few pixels away survive, and
+// with max_distance 1 only hits within about 1 world unit.
+TEST_F(SsrPassLimits, MaxStepsAndMaxDistanceBoundTheMarch) {
+  const FloorAndBox setup;
+  SsrSettings few_steps;
+  few_steps.stride = 1.0f;
+  few_steps.jitter = false;
+  few_steps.max_steps = 3;
+  SsrSettings short_rays = few_steps;
+  short_rays.max_steps = 256;
+  short_rays.max_distance = 1.0f;
+  const SsrResult full = run_ssr(setup.scene, setup.camera, SsrSettings{});
+  const SsrResult stepped = run_ssr(setup.scene, setup.camera, few_steps);
+  const SsrResult shortened = run_ssr(setup.scene, setup.camera, short_rays);
+  int stepped_hits = 0, long_failed = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const std::size_t i = full.cpu.index(x, y);
+      if (!reflective(full.cpu, i)) continue;
+      const auto hit = mirror_hit(setup.scene, full, i);
+      if (stepped.mask[i] == 0) {
+        ++stepped_hits;
+        ASSERT_TRUE(hit.has_value());
+        const vec2 q = testing::project_to_pixels(full.constants, hit->position);
+        const vec2 origin(float(x) + 0.5f, float(y) + 0.5f);
+        EXPECT_LE(std::max(std::abs(q.x - origin.x), std::abs(q.y - origin.y)), 5.0f)
+            << "a 3-step march hit something far away at " << x << "," << y;
+      }
+      if (shortened.mask[i] == 0) {
+        EXPECT_LE(shortened.reflection[i].w, 1.1f) << x << "," << y;
+      }
+      if (is_object(setup.scene, hit, setup.box) && hit->t > 1.3f) {
+        ++long_failed;
+        EXPECT_EQ(shortened.mask[i], 1) << "a ray longer than max_distance was trusted at " << x << "," << y;
+      }
+    }
+  }
+  EXPECT_LT(stepped_hits, static_cast<int>(full.counts.reflective - full.counts.failed));
+  EXPECT_GT(long_failed, 40);
+  EXPECT_EQ(stepped.counts.failed, stepped.counts.reflective - static_cast<std::uint32_t>(stepped_hits));
+}
+
 SsrSettings fine_settings() {
   SsrSettings s;
   s.stride = 1.0f;
@@ -323,7 +368,7 @@ INSTANTIATE_TEST_SUITE_P(Strides, SsrPassTest, ::testing::Values(SsrSettings{}, 
                            return std::string(i == 0 ? "defaults" : i == 1 ? "stride1_nojitter" : "stride4");
                          });
 
-using SsrPassErrors = glint::testing::GlTest;
+
 
 TEST_F(SsrPassErrors, InvalidSettingsNameTheField) {
   SsrSettings s;
