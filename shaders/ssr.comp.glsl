@@ -164,11 +164,13 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   bool refined = false;
   for (int i = 0; i < refinement_steps; ++i) {
     const float mid = 0.5 * (lo + hi);
-    const ivec2 mid_pixel = ivec2(line_pixel_position(line, mid));
+    const vec2 mid_p = line_pixel_position(line, mid);
+    const ivec2 mid_pixel = ivec2(mid_p);
     const vec2 span = pixel_span(line, mid);
     const float surface = scene_depth(mid_pixel);
-    // The origin's own pixel is never a hit (any point of the ray beyond it is "behind" it).
-    if (mid_pixel != pixel && span.y >= surface && span.x <= surface + thickness) {
+    // The origin's own pixel is never a hit (any point of the ray beyond it is "behind" it); the
+    // half step ahead may reach past the border.
+    if (on_screen(mid_p) && mid_pixel != pixel && span.y >= surface && span.x <= surface + thickness) {
       hi = mid;
       refined = true;
     } else {
