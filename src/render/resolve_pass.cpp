@@ -1,0 +1,59 @@
+#include "render/resolve_pass.h"
+
+#include "gl/gl_check.h"
+#include "gl/gl_pass_scope.h"
+#include "render/reflection_texture_check.h"
+#include "render/render_targets.h"
+
+namespace glint::render {
+namespace {
+
+constexpr int kWorkGroupSize = 8;  // local_size_x/y in resolve.comp.glsl
+// Image units of resolve.comp.glsl.
+constexpr GLuint kLitUnit = 0, kAlbedoUnit = 1, kReflectionUnit = 2, kFinalUnit = 3;
+
+GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
+
+}  // namespace
+
+ResolvePass::ResolvePass(int width, int height, const ResolveSettings& settings)
+    : blur_(width, height), program_(ShaderProgram::from_embedded({"resolve.comp.glsl"})) {
+  set_settings(settings);
+  resize(width, height);
+}
+
+void ResolvePass::resize(int width, int height) {
+  require_pass_size("resolve", width, height);
+  if (width != blur_.width() || height != blur_.height()) blur_.resize(width, height);
+  final_ = create_texture_2d(kFinalFormat, width, height);
+  check_gl("resolve: create final image");
+}
+
+void ResolvePass::set_settings(const ResolveSettings& settings) {
+  validate(settings);
+  settings_ = settings;
+  program_.set_uniform("exposure", settings.exposure);
+  program_.set_uniform("tone_map", static_cast<int>(settings.tone_map));
+}
+
+void ResolvePass::run(const ResolveInputs& inputs) {
+  GlPassScope scope("resolve");
+  const int w = width(), h = height();
+  require_texture("resolve", "lit", inputs.lit, kLitFormat, w, h);
+  require_texture("resolve", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, w, h);
+  require_texture("resolve", "reflection", inputs.reflection, kReflectionFormat, w, h);
+
+  blur_.run(inputs.reflection, settings_);
+
+  glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
+  glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
+  glBindImageTexture(kReflectionUnit, blur_.output(), 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
+  glBindImageTexture(kFinalUnit, final_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFinalFormat);
+  program_.use();
+  glDispatchCompute(group_count(w), group_count(h), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT);
+  check_gl("resolve");
+}
+
+}  // namespace glint::render

@@ -1,0 +1,35 @@
+#pragma once
+// Tunables of the reflection resolve: distance fade, blur (ReflectionBlurPass) and composite + tone
+// map (ResolvePass). docs/ssr.md gives the formulas.
+#include <string_view>
+
+namespace glint::render {
+
+enum class ToneMap {
+  none,      // clamp to [0, 1] only (tests compare against exact sums)
+  reinhard,  // c / (1 + c) per channel
+  aces,      // Narkowicz's fit of the ACES filmic curve, per channel
+};
+
+// "none", "reinhard", "aces"; and back (an unknown name is a glint::Error listing the known ones).
+std::string_view tone_map_name(ToneMap tone_map);
+ToneMap tone_map_from_name(std::string_view name);
+
+struct ResolveSettings {
+  // Distance fade of the reflection by the reflected ray's world length d (reflection.a):
+  // factor 1 for d <= fade_start, falling smoothly (smoothstep) to 0 at d >= fade_end.
+  // fade_end <= 0 turns the fade off (factor exactly 1).
+  float fade_start = 15.0f;
+  float fade_end = 30.0f;
+  // Separable Gaussian blur radius in pixels (0..32), sigma = radius / 2. 0 = no blur: the
+  // reflection passes through (only faded), bit-identical when the fade is off.
+  int blur_radius = 2;
+  // Linear scale applied to lit + reflectivity x reflection before the tone map (> 0).
+  float exposure = 1.0f;
+  ToneMap tone_map = ToneMap::aces;
+};
+
+// Throws glint::Error naming the first setting that is out of range.
+void validate(const ResolveSettings& settings);
+
+}  // namespace glint::render

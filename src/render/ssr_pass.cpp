@@ -1,0 +1,91 @@
+#include "render/ssr_pass.h"
+
+#include "gl/gl_check.h"
+#include "gl/gl_pass_scope.h"
+#include "render/frame_constants.h"
+#include "render/reflection_texture_check.h"
+#include "render/render_targets.h"
+
+#include <array>
+
+namespace glint::render {
+namespace {
+
+constexpr int kWorkGroupSize = 8;  // local_size_x/y in ssr.comp.glsl
+
+// Image units, as declared in ssr.comp.glsl.
+constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit = 3, kReflectionUnit = 4,
+                 kFailureMaskUnit = 5;
+
+GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
+
+}  // namespace
+
+SsrPass::SsrPass(int width, int height, const SsrSettings& settings)
+    : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})) {
+  set_settings(settings);
+  counters_ = create_buffer(2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  resize(width, height);
+}
+
+void SsrPass::resize(int width, int height) {
+  require_pass_size("ssr", width, height);
+  reflection_ = create_texture_2d(kReflectionFormat, width, height);
+  failure_mask_ = create_texture_2d(kFailureMaskFormat, width, height);
+  width_ = width;
+  height_ = height;
+  check_gl("ssr: create outputs");
+}
+
+void SsrPass::set_settings(const SsrSettings& settings) {
+  validate(settings);
+  settings_ = settings;
+  program_.set_uniform("max_steps", settings.max_steps);
+  program_.set_uniform("stride", settings.stride);
+  program_.set_uniform("refinement_steps", settings.refinement_steps);
+  program_.set_uniform("jitter", settings.jitter ? 1 : 0);
+  program_.set_uniform("thickness", settings.thickness);
+  program_.set_uniform("max_distance", settings.max_distance);
+  program_.set_uniform("confidence_threshold", settings.confidence_threshold);
+  program_.set_uniform("edge_fade", settings.edge_fade);
+  program_.set_uniform("self_hit_distance", settings.self_hit_distance);
+}
+
+void SsrPass::run(const SsrInputs& inputs) {
+  GlPassScope scope("ssr");
+  require_texture("ssr", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, width_,
+                  height_);
+  require_texture("ssr", "world_position", inputs.world_position, kWorldPositionFormat, width_, height_);
+  require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
+  require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
+  require_buffer("ssr", "frame_constants", inputs.frame_constants);
+
+  const std::array<std::uint32_t, 2> zero{0, 0};
+  glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero.data());
+
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPixelCountersBinding, counters_.id());
+  glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
+  glBindImageTexture(kPositionUnit, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
+  glBindImageTexture(kNormalUnit, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
+  glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
+  glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
+  glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
+
+  program_.use();
+  glDispatchCompute(group_count(width_), group_count(height_), 1);
+  // Later passes read the outputs as images or textures, the ray-trace step reads the counters as a
+  // buffer, and tests read everything back.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  check_gl("ssr");
+}
+
+SsrCounts SsrPass::read_counts() const {
+  std::array<std::uint32_t, 2> values{0, 0};
+  glGetNamedBufferSubData(counters_.id(), 0, sizeof(values), values.data());
+  check_gl("ssr: read counters");
+  return {values[0], values[1]};
+}
+
+}  // namespace glint::render

@@ -1,0 +1,74 @@
+#pragma once
+// SsrPass: screen-space reflections for every reflective pixel of the G-buffer. One compute
+// dispatch marches each pixel's mirror ray through the depth of the G-buffer with McGuire & Mara's
+// perspective-correct DDA (JCGT 2014) and writes
+//   reflection (kReflectionFormat): rgb = lit colour at the trusted hit, a = world distance from the
+//                                   surface to the hit; 0 where the pixel is not reflective or failed;
+//   failure mask (kFailureMaskFormat): 1 where a reflective pixel needs a ray-traced reflection;
+//   pixel counters: a 2-uint SSBO at binding kPixelCountersBinding, [0] reflective pixels and
+//                   [1] failed pixels (an SSBO with atomicAdd, one add per work group and counter,
+//                   not an atomic-counter buffer).
+// docs/ssr.md states the algorithm, the failure rules and the confidence formula.
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/ssr_settings.h"
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+
+namespace glint::render {
+
+// Inputs, all width x height in the formats of render_targets.h. The depth buffer is not needed:
+// the march takes each pixel's linear depth from the world position (exact, where a 32-bit
+// perspective depth loses precision far away) and its background flag from position.w.
+struct SsrInputs {
+  GLuint albedo_reflectivity = 0;  // kAlbedoReflectivityFormat; a = reflectivity
+  GLuint world_position = 0;       // kWorldPositionFormat; w = 1 geometry, 0 background
+  GLuint world_normal = 0;         // kWorldNormalRoughnessFormat
+  GLuint lit = 0;                  // kLitFormat; the colour a hit reflects
+  GLuint frame_constants = 0;      // uniform buffer holding FrameConstants (frame_constants.h)
+};
+
+struct SsrCounts {
+  std::uint32_t reflective = 0;  // pixels with geometry and reflectivity > 0
+  std::uint32_t failed = 0;      // reflective pixels left for the ray tracer (failure mask = 1)
+};
+
+class SsrPass {
+public:
+  // Compiles shaders/ssr.comp.glsl and creates the outputs; throws glint::Error for a non-positive
+  // size or invalid settings.
+  SsrPass(int width, int height, const SsrSettings& settings = {});
+
+  // Recreates the outputs for a new size (their contents are undefined until the next run()).
+  void resize(int width, int height);
+  void set_settings(const SsrSettings& settings);  // validated; throws glint::Error
+  const SsrSettings& settings() const { return settings_; }
+
+  // Clears the counters and dispatches the march. Inputs are checked (ids, sizes, formats) and a
+  // mismatch is a glint::Error. Ends with a memory barrier that makes the outputs visible to any
+  // later image load, texture fetch, readback or buffer read.
+  void run(const SsrInputs& inputs);
+
+  GLuint reflection() const { return reflection_.id(); }
+  GLuint failure_mask() const { return failure_mask_.id(); }
+  GLuint counters_buffer() const { return counters_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // The counters of the last run(). It waits for the GPU: for tests, statistics and debug output,
+  // never inside timed frame code.
+  SsrCounts read_counts() const;
+
+private:
+  ShaderProgram program_;
+  SsrSettings settings_;
+  int width_ = 0;
+  int height_ = 0;
+  GlTexture reflection_;
+  GlTexture failure_mask_;
+  GlBuffer counters_;
+};
+
+}  // namespace glint::render
