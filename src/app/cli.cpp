@@ -3,6 +3,7 @@
 #include "app/compare_command.h"
 #include "app/devices_command.h"
 #include "app/info_command.h"
+#include "app/render_command.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -13,6 +14,26 @@
 #include <exception>
 
 namespace glint {
+namespace {
+
+// The command as typed, for run records; arguments with spaces are quoted.
+std::string command_line_text(int argc, char** argv) {
+  std::string text;
+  for (int i = 0; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (i > 0) text += ' ';
+    if (argument.find(' ') != std::string::npos) {
+      text += '"';
+      text += argument;
+      text += '"';
+    } else {
+      text += argument;
+    }
+  }
+  return text;
+}
+
+}  // namespace
 
 int run_cli(int argc, char** argv) {
   CLI::App app{"glint: hybrid screen-space + ray-traced reflections for walkthroughs of static and deformable scenes",
@@ -26,6 +47,8 @@ int run_cli(int argc, char** argv) {
   add_info_command(app, info);
   DevicesOptions devices;
   add_devices_command(app, devices);
+  RenderOptions render;
+  add_render_command(app, render);
   CompareOptions compare;
   add_compare_command(app, compare);
 
@@ -46,6 +69,10 @@ int run_cli(int argc, char** argv) {
   try {
     if (app.got_subcommand("info")) return run_info_command(info);
     if (app.got_subcommand("devices")) return run_devices_command(devices);
+    if (app.got_subcommand("render")) {
+      render.command_line = command_line_text(argc, argv);
+      return run_render_command(render);
+    }
     if (app.got_subcommand("compare")) return run_compare_command(compare);
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());

@@ -6,7 +6,18 @@
 
 namespace glint {
 
-GpuTimer::GpuTimer() {
+PassTimingMethod pass_timing_for_renderer(std::string_view gl_renderer) {
+  const bool software = gl_renderer.find("llvmpipe") != std::string_view::npos ||
+                        gl_renderer.find("softpipe") != std::string_view::npos;
+  return software ? PassTimingMethod::finish_wall_clock : PassTimingMethod::gpu_queries;
+}
+
+std::string_view pass_timing_name(PassTimingMethod method) {
+  return method == PassTimingMethod::gpu_queries ? "gpu_queries" : "finish_wall_clock";
+}
+
+GpuTimer::GpuTimer(PassTimingMethod method) : method_(method) {
+  if (method_ == PassTimingMethod::finish_wall_clock) return;
   GLint bits = 0;
   glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
   if (bits <= 0) fail("GpuTimer: this OpenGL implementation has no GL_TIME_ELAPSED counter (0 bits)");
@@ -19,6 +30,7 @@ void GpuTimer::begin_frame() {
   if (set.pending) collect(set, /*wait=*/true);
   set.frame = next_frame_;
   set.names.clear();
+  wall_clock_frame_ = FrameTimes{next_frame_, {}};
   in_frame_ = true;
 }
 
@@ -26,21 +38,38 @@ void GpuTimer::begin_pass(std::string_view name) {
   if (!in_frame_) fail("GpuTimer: pass '{}' begun outside begin_frame()/end_frame()", name);
   if (in_pass_) fail("GpuTimer: pass '{}' begun inside pass '{}'; GL time queries cannot nest", name, current().names.back());
   QuerySet& set = current();
-  if (set.names.size() == set.queries.size()) set.queries.push_back(create_query(GL_TIME_ELAPSED));
-  glBeginQuery(GL_TIME_ELAPSED, set.queries[set.names.size()].id());
   set.names.emplace_back(name);
   in_pass_ = true;
+  if (method_ == PassTimingMethod::finish_wall_clock) {
+    glFinish();  // earlier work must not count towards this pass
+    pass_start_ = std::chrono::steady_clock::now();
+    return;
+  }
+  if (set.names.size() > set.queries.size()) set.queries.push_back(create_query(GL_TIME_ELAPSED));
+  glBeginQuery(GL_TIME_ELAPSED, set.queries[set.names.size() - 1].id());
 }
 
 void GpuTimer::end_pass() {
   if (!in_pass_) fail("GpuTimer::end_pass without begin_pass");
-  glEndQuery(GL_TIME_ELAPSED);
   in_pass_ = false;
+  if (method_ == PassTimingMethod::finish_wall_clock) {
+    glFinish();
+    const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - pass_start_;
+    wall_clock_frame_.passes.push_back({current().names.back(), elapsed.count()});
+    return;
+  }
+  glEndQuery(GL_TIME_ELAPSED);
 }
 
 void GpuTimer::end_frame() {
   if (!in_frame_) fail("GpuTimer::end_frame without begin_frame");
   if (in_pass_) fail("GpuTimer::end_frame inside pass '{}'", current().names.back());
+  if (method_ == PassTimingMethod::finish_wall_clock) {
+    completed_.push_back(std::move(wall_clock_frame_));
+    in_frame_ = false;
+    ++next_frame_;
+    return;
+  }
   current().pending = true;
   in_frame_ = false;
   ++next_frame_;

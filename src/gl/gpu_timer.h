@@ -11,15 +11,31 @@
 //   for (auto& frame : timer.take_completed()) write_row(frame);
 //
 // Passes cannot nest: GL allows one GL_TIME_ELAPSED query at a time.
+//
+// Mesa's llvmpipe answers GL_TIME_ELAPSED with meaningless values (it reports a clock, not the work of
+// the pass), so on software renderers the timer measures each pass instead as wall time between two
+// glFinish() calls (PassTimingMethod::finish_wall_clock). That serialises CPU and GPU, which is the
+// truth for a software renderer anyway; on a real GPU it would hide overlap, so queries stay the default.
 #include "gl/gl_objects.h"
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace glint {
+
+enum class PassTimingMethod {
+  gpu_queries,        // GL_TIME_ELAPSED queries, double-buffered, no stalls
+  finish_wall_clock,  // glFinish() before and after every pass, steady_clock in between
+};
+
+// The method that gives real numbers on the renderer named `gl_renderer` (GL_RENDERER):
+// finish_wall_clock for Mesa's software rasterisers (llvmpipe, softpipe), gpu_queries otherwise.
+PassTimingMethod pass_timing_for_renderer(std::string_view gl_renderer);
+std::string_view pass_timing_name(PassTimingMethod method);  // "gpu_queries", "finish_wall_clock"
 
 struct PassTime {
   std::string name;
@@ -33,7 +49,9 @@ struct FrameTimes {
 
 class GpuTimer {
 public:
-  GpuTimer();  // needs a current GL context; throws when it cannot time (no timer query bits)
+  // Needs a current GL context; with gpu_queries it throws when it cannot time (no timer query bits).
+  explicit GpuTimer(PassTimingMethod method = PassTimingMethod::gpu_queries);
+  PassTimingMethod method() const { return method_; }
 
   void begin_frame();
   void end_frame();
@@ -73,6 +91,9 @@ private:
   // Reads `set`'s results into completed_ if they are available or `wait`; returns whether it did.
   bool collect(QuerySet& set, bool wait);
 
+  PassTimingMethod method_;
+  std::chrono::steady_clock::time_point pass_start_;  // finish_wall_clock: when the open pass began
+  FrameTimes wall_clock_frame_;                        // finish_wall_clock: the frame being measured
   std::array<QuerySet, 2> sets_;
   std::uint64_t next_frame_ = 0;  // the frame begin_frame() starts next; current one while in a frame
   bool in_frame_ = false;

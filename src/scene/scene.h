@@ -69,7 +69,7 @@ struct Instance {
 struct PointLight {
   vec3 position{0.0f, 5.0f, 0.0f};  // rest position; the walkthrough's light path moves it
   vec3 color{1.0f};
-  float intensity = 60.0f;          // radiant intensity scale; attenuation is 1 / (1 + (d / range)^2)
+  float intensity = 20.0f;          // radiant intensity (docs/render.md); attenuation is 1 / (1 + (d / range)^2)
   float range = 10.0f;
 };
 

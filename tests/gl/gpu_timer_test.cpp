@@ -5,12 +5,17 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <string>
+#include <thread>
 
 namespace glint {
 namespace {
 
 using GlGpuTimer = testing::GlTest;
+
+constexpr PassTimingMethod kMethods[] = {PassTimingMethod::gpu_queries, PassTimingMethod::finish_wall_clock};
 
 // Something worth timing: a full-screen triangle into a 256x256 target.
 class Workload {
@@ -40,7 +45,9 @@ private:
 
 TEST_F(GlGpuTimer, GivesAFiniteNonNegativeTimePerNamedPassAfterADraw) {
   Workload workload;
-  GpuTimer timer;
+  for (const PassTimingMethod method : kMethods) {
+  SCOPED_TRACE(std::string(pass_timing_name(method)));
+  GpuTimer timer(method);
   timer.begin_frame();
   {
     auto scope = timer.time_pass("fullscreen");
@@ -65,11 +72,14 @@ TEST_F(GlGpuTimer, GivesAFiniteNonNegativeTimePerNamedPassAfterADraw) {
     EXPECT_GE(pass.milliseconds, 0.0) << pass.name;
   }
   EXPECT_TRUE(timer.take_completed().empty()) << "each frame comes out once";
+  }
 }
 
 TEST_F(GlGpuTimer, EveryFrameComesOutOnceAndInOrder) {
   Workload workload;
-  GpuTimer timer;
+  for (const PassTimingMethod method : kMethods) {
+  SCOPED_TRACE(std::string(pass_timing_name(method)));
+  GpuTimer timer(method);
   std::vector<FrameTimes> frames;
   for (int frame = 0; frame < 6; ++frame) {
     timer.begin_frame();
@@ -91,10 +101,13 @@ TEST_F(GlGpuTimer, EveryFrameComesOutOnceAndInOrder) {
     EXPECT_EQ(frames[i].passes.size(), i == 3 ? 0u : 1u);
   }
   check_gl("six frames");
+  }
 }
 
 TEST_F(GlGpuTimer, MisuseIsAnErrorNotAGlError) {
-  GpuTimer timer;
+  for (const PassTimingMethod method : kMethods) {
+  SCOPED_TRACE(std::string(pass_timing_name(method)));
+  GpuTimer timer(method);
   EXPECT_THROW(timer.begin_pass("outside a frame"), Error);
   timer.begin_frame();
   EXPECT_THROW(timer.begin_frame(), Error);
@@ -106,6 +119,31 @@ TEST_F(GlGpuTimer, MisuseIsAnErrorNotAGlError) {
   timer.wait_for_all();
   EXPECT_EQ(timer.take_completed().size(), 1u);
   check_gl("timer misuse");
+  }
+}
+
+// Wall-clock timing covers everything between the pass's start and end, so a pass that waits 30 ms
+// on the CPU measures at least that (a bound on what was done, not a performance claim).
+TEST_F(GlGpuTimer, WallClockPassesIncludeTheirWholeDuration) {
+  Workload workload;
+  GpuTimer timer(PassTimingMethod::finish_wall_clock);
+  timer.begin_frame();
+  {
+    auto scope = timer.time_pass("draw and wait");
+    workload.draw();
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  }
+  timer.end_frame();
+  const auto frames = timer.take_completed();
+  ASSERT_EQ(frames.size(), 1u) << "wall-clock frames are complete when they end";
+  ASSERT_EQ(frames[0].passes.size(), 1u);
+  EXPECT_GE(frames[0].passes[0].milliseconds, 30.0);
+}
+
+TEST(GpuTimerMethod, SoftwareRenderersAreTimedWithTheWallClock) {
+  EXPECT_EQ(pass_timing_for_renderer("llvmpipe (LLVM 15.0.6, 256 bits)"), PassTimingMethod::finish_wall_clock);
+  EXPECT_EQ(pass_timing_for_renderer("softpipe"), PassTimingMethod::finish_wall_clock);
+  EXPECT_EQ(pass_timing_for_renderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"), PassTimingMethod::gpu_queries);
 }
 
 }  // namespace

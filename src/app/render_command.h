@@ -1,0 +1,35 @@
+#pragma once
+// `glint render [scene]`: renders frames of a scene's walkthrough headless and writes PNG frames,
+// timings.csv (one row per frame: GPU ms per pass, CPU frame ms, pixel counts), run.json (how the
+// run was made), optionally debug views and an MP4. docs/render-command.md describes the outputs.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace glint {
+
+struct RenderOptions {
+  std::string scene = "atrium";
+  std::string reflections = "ssr";
+  int width = 1280;
+  int height = 720;
+  std::string frames;             // FrameSelection text; empty = the whole walkthrough
+  std::string out = "render-out";
+  bool debug_views = false;
+  bool video = false;
+  std::string deform = "on";      // on|off: animate the deformable meshes
+  // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
+  int blur_radius = 2;
+  float exposure = 1.0f;
+  std::string tone_map = "aces";
+  int shadow_map_size = 1024;
+  int ssr_max_steps = 256;
+  float ssr_thickness = 0.5f;
+  float ssr_confidence = 0.9f;
+  std::string command_line;       // for run.json, set by the CLI
+};
+
+void add_render_command(CLI::App& app, RenderOptions& options);
+int run_render_command(const RenderOptions& options);
+
+}  // namespace glint

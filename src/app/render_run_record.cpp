@@ -1,0 +1,124 @@
+#include "app/render_run_record.h"
+
+#include "core/atomic_file.h"
+#include "render/frame_pipeline.h"
+
+#include <chrono>
+#include <ctime>
+
+namespace glint {
+namespace {
+
+std::string utc_timestamp() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+nlohmann::json scene_summary(const Scene& scene) {
+  return {{"name", scene.name},
+          {"source", scene.source},
+          {"meshes", scene.meshes.size()},
+          {"instances", scene.instances.size()},
+          {"materials", scene.materials.size()},
+          {"textures", scene.textures.size()},
+          {"vertices", scene.vertex_count()},
+          {"triangles", scene.triangle_count()},
+          {"deformable_meshes", scene.deformable_meshes().size()},
+          {"walkthrough_frames", scene.walkthrough.frame_count}};
+}
+
+nlohmann::json options_summary(const RenderOptions& options) {
+  return {{"reflections", options.reflections},
+          {"deform", options.deform},
+          {"debug_views", options.debug_views},
+          {"video", options.video},
+          {"blur_radius", options.blur_radius},
+          {"exposure", options.exposure},
+          {"tone_map", options.tone_map},
+          {"shadow_map_size", options.shadow_map_size},
+          {"ssr_max_steps", options.ssr_max_steps},
+          {"ssr_thickness", options.ssr_thickness},
+          {"ssr_confidence", options.ssr_confidence}};
+}
+
+}  // namespace
+
+RenderRunRecord::RenderRunRecord(const RenderOptions& options, const Scene& scene, const HeadlessGlContext& context,
+                                 PassTimingMethod pass_timing, const std::vector<int>& frames)
+    : triangles_(scene.triangle_count()) {
+  run_["command"] = options.command_line;
+  run_["glint_version"] = GLINT_VERSION;
+  run_["date"] = utc_timestamp();
+  run_["scene"] = scene_summary(scene);
+  run_["gl"] = {{"renderer", context.renderer()},
+                {"vendor", context.vendor()},
+                {"version", context.version()},
+                {"egl_device", context.device_index()},
+                {"pass_timing", pass_timing_name(pass_timing)}};
+  run_["resolution"] = {options.width, options.height};
+  run_["frames"] = {{"selection", options.frames.empty() ? "all" : options.frames},
+                    {"count", frames.size()},
+                    {"first", frames.empty() ? -1 : frames.front()},
+                    {"last", frames.empty() ? -1 : frames.back()}};
+  run_["options"] = options_summary(options);
+}
+
+std::vector<std::string> RenderRunRecord::timings_header() {
+  std::vector<std::string> header{"frame"};
+  for (const std::string_view pass : render::kFramePassNames) header.push_back(std::string(pass) + "_ms");
+  for (const char* column : {"gpu_total_ms", "cpu_frame_ms", "deform_ms", "triangles", "reflective_pixels",
+                             "ssr_failed_pixels"})
+    header.emplace_back(column);
+  return header;
+}
+
+std::vector<CsvField> RenderRunRecord::add_frame(int frame, const FrameTimes& times, double cpu_frame_ms,
+                                                 double deform_ms, const std::optional<render::SsrCounts>& counts) {
+  std::vector<CsvField> row{frame};
+  std::map<std::string, double>& recorded = frame_ms_.emplace_back();
+  double gpu_total_ms = 0.0;
+  for (const std::string_view pass : render::kFramePassNames) {
+    std::optional<double> ms;
+    for (const PassTime& time : times.passes)
+      if (time.name == pass) ms = ms.value_or(0.0) + time.milliseconds;
+    if (ms) {
+      row.emplace_back(*ms);
+      gpu_total_ms += *ms;
+      recorded[std::string(pass) + "_ms"] = *ms;
+    } else {
+      row.emplace_back("");
+    }
+  }
+  row.emplace_back(gpu_total_ms);
+  row.emplace_back(cpu_frame_ms);
+  row.emplace_back(deform_ms);
+  row.emplace_back(triangles_);
+  row.emplace_back(counts ? CsvField(counts->reflective) : CsvField(""));
+  row.emplace_back(counts ? CsvField(counts->failed) : CsvField(""));
+  recorded["gpu_total_ms"] = gpu_total_ms;
+  recorded["cpu_frame_ms"] = cpu_frame_ms;
+  recorded["deform_ms"] = deform_ms;
+  return row;
+}
+
+void RenderRunRecord::write(const std::filesystem::path& path, double wall_ms) const {
+  nlohmann::json run = run_;
+  const std::size_t skipped = frame_ms_.size() > 1 ? 1 : 0;
+  std::map<std::string, double> sums;
+  for (std::size_t i = skipped; i < frame_ms_.size(); ++i)
+    for (const auto& [column, ms] : frame_ms_[i]) sums[column] += ms;
+  nlohmann::json means = nlohmann::json::object();
+  const double counted = static_cast<double>(frame_ms_.size() - skipped);
+  for (const auto& [column, sum] : sums) means[column] = sum / counted;
+  run["mean_per_frame"] = means;
+  run["mean_excludes_first_frames"] = skipped;
+  run["frames_rendered"] = frame_ms_.size();
+  run["wall_seconds"] = wall_ms / 1000.0;
+  write_file_atomically(path, run.dump(2) + "\n");
+}
+
+}  // namespace glint

@@ -1,0 +1,61 @@
+#include "render/debug_views.h"
+
+#include <algorithm>
+
+namespace glint::render {
+namespace {
+
+// Applies `colour_of` to every pixel and quantises; alpha is always opaque.
+template <typename ColourOf>
+ImageRgba8 map_pixels(const ImageRgbaF& image, ColourOf&& colour_of) {
+  ImageRgbaF mapped(image.width, image.height);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) mapped.pixels[i] = vec4(colour_of(image.pixels[i]), 1.0f);
+  return quantize_to_rgba8(mapped);
+}
+
+bool is_background(const vec4& world_position) { return world_position.w == 0.0f; }
+
+}  // namespace
+
+ImageRgba8 albedo_view(const ImageRgbaF& albedo_reflectivity) {
+  return map_pixels(albedo_reflectivity, [](const vec4& p) { return vec3(p); });
+}
+
+ImageRgba8 normal_view(const ImageRgbaF& world_normal) {
+  return map_pixels(world_normal, [](const vec4& p) {
+    const vec3 n(p);
+    return glm::dot(n, n) == 0.0f ? vec3(0.0f) : 0.5f * n + 0.5f;
+  });
+}
+
+ImageRgba8 position_view(const ImageRgbaF& world_position, const Aabb& world_bounds) {
+  const vec3 size = glm::max(world_bounds.extent(), vec3(1e-6f));
+  return map_pixels(world_position, [&](const vec4& p) {
+    return is_background(p) ? vec3(0.0f) : (vec3(p) - world_bounds.min) / size;
+  });
+}
+
+ImageRgba8 depth_view(const ImageRgbaF& world_position, const FrameConstants& frame) {
+  // The camera looks down -z in view space, so depth is -z.
+  const auto depth_of = [&](const vec4& p) { return -(frame.view * vec4(vec3(p), 1.0f)).z; };
+  float farthest = 0.0f;
+  for (const vec4& p : world_position.pixels)
+    if (!is_background(p)) farthest = std::max(farthest, depth_of(p));
+  return map_pixels(world_position, [&](const vec4& p) {
+    if (is_background(p) || farthest <= 0.0f) return vec3(0.0f);
+    return vec3(std::clamp(1.0f - depth_of(p) / farthest, 0.0f, 1.0f));
+  });
+}
+
+ImageRgba8 grey_view(const ImageRgbaF& image) {
+  return map_pixels(image, [](const vec4& p) { return vec3(std::clamp(p.x, 0.0f, 1.0f)); });
+}
+
+ImageRgba8 reflection_view(const ImageRgbaF& reflection) {
+  return map_pixels(reflection, [](const vec4& p) {
+    const vec3 c = glm::max(vec3(p), vec3(0.0f));
+    return c / (vec3(1.0f) + c);
+  });
+}
+
+}  // namespace glint::render

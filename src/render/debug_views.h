@@ -1,0 +1,25 @@
+#pragma once
+// Turns the renderer's intermediate images (float, linear, world units) into 8-bit pictures a
+// person can read, for `glint render --debug-views` and docs. Each mapping is stated here so a
+// reader of the PNGs knows what a grey level means. Input images are top row first, as read back.
+#include "core/image.h"
+#include "core/math.h"
+#include "render/frame_constants.h"
+
+namespace glint::render {
+
+// Albedo rgb as stored (linear, shown without encoding so dark albedos stay distinguishable).
+ImageRgba8 albedo_view(const ImageRgbaF& albedo_reflectivity);
+// World normal n mapped to colour 0.5 * n + 0.5; background (zero normal) black.
+ImageRgba8 normal_view(const ImageRgbaF& world_normal);
+// World position mapped into the scene's bounds: (p - min) / (max - min) as rgb; background black.
+ImageRgba8 position_view(const ImageRgbaF& world_position, const Aabb& world_bounds);
+// Distance along the camera's view axis, grey = 1 - depth / (largest depth in this image): near is
+// white, the farthest geometry of the frame black; background black too. The range adapts per frame.
+ImageRgba8 depth_view(const ImageRgbaF& world_position, const FrameConstants& frame);
+// The red channel as grey (shadow mask: white lit; failure mask: white where SSR failed).
+ImageRgba8 grey_view(const ImageRgbaF& image);
+// The reflection colour through a Reinhard curve (HDR), black where no reflection was found.
+ImageRgba8 reflection_view(const ImageRgbaF& reflection);
+
+}  // namespace glint::render
