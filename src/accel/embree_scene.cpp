@@ -52,7 +52,11 @@ EmbreeScene::EmbreeScene(const EmbreeDevice& device, const TriangleMesh& mesh, E
   scene_ = rtcNewScene(device.handle());
   device.check("rtcNewScene");
   // A dynamic scene keeps its BVH layout refittable; static scenes get the faster-to-trace layout.
-  rtcSetSceneFlags(scene_, quality == EmbreeQuality::refit ? RTC_SCENE_FLAG_DYNAMIC : RTC_SCENE_FLAG_NONE);
+  // ROBUST: without it Embree's box and triangle tests let rays through shared edges and vertices
+  // (hundreds of the grid edge rays in tests/accel/embree_scene_test.cpp), while glint's own
+  // traversal is watertight; the reference must answer the same question.
+  rtcSetSceneFlags(scene_, (quality == EmbreeQuality::refit ? RTC_SCENE_FLAG_DYNAMIC : RTC_SCENE_FLAG_NONE) |
+                               RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, quality == EmbreeQuality::refit ? RTC_BUILD_QUALITY_LOW : build_quality(quality));
 
   if (mesh.triangle_count > 0) {

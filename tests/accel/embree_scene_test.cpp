@@ -195,8 +195,10 @@ TEST(EmbreeScene, BadInputIsAClearError) {
 
 TEST(EmbreeDevice, EmbreeErrorsBecomeGlintErrorsWithEmbreesMessage) {
   const EmbreeDevice device;
-  // An invalid geometry type is reported through the device's error callback.
-  rtcNewGeometry(device.handle(), static_cast<RTCGeometryType>(999));
+  // A float index buffer is invalid; Embree reports it through the device's error callback.
+  RTCGeometry geometry = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_FLOAT, sizeof(float), 3);
+  rtcReleaseGeometry(geometry);
   const std::string message = glint::testing::error_of([&] { device.check("test"); });
   EXPECT_NE(message.find("embree: test: RTC_ERROR_"), std::string::npos) << message;
   EXPECT_NO_THROW(device.check("after the error was reported"));

@@ -71,10 +71,11 @@ TEST(SceneGeometry, UpdateDeformedEqualsAFreshFlattenAndTouchesOnlyDirtyMeshes) 
   EXPECT_EQ(geometry.indices, rest.indices);
   // The sheets did move, the floor and wall did not.
   EXPECT_NE(geometry.positions, rest.positions);
-  for (const InstanceRange& range : geometry.instances)
-    if (range.mesh != 2)
-      for (uint32_t v = range.first_vertex; v < range.first_vertex + range.vertex_count; ++v)
-        EXPECT_EQ(geometry.positions[v], rest.positions[v]);
+  for (const InstanceRange& range : geometry.instances) {
+    if (range.mesh == 2) continue;
+    for (uint32_t v = range.first_vertex; v < range.first_vertex + range.vertex_count; ++v)
+      EXPECT_EQ(geometry.positions[v], rest.positions[v]);
+  }
 
   Scene changed = scene;
   changed.meshes[2].positions.pop_back();
