@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/accel_bench_command.h"
 #include "app/devices_command.h"
 #include "app/info_command.h"
 #include "core/error.h"
@@ -25,6 +26,8 @@ int run_cli(int argc, char** argv) {
   add_info_command(app, info);
   DevicesOptions devices;
   add_devices_command(app, devices);
+  AccelBenchOptions accel_bench;
+  add_accel_bench_command(app, accel_bench);
 
   try {
     app.parse(argc, argv);
@@ -43,6 +46,7 @@ int run_cli(int argc, char** argv) {
   try {
     if (app.got_subcommand("info")) return run_info_command(info);
     if (app.got_subcommand("devices")) return run_devices_command(devices);
+    if (app.got_subcommand("accel-bench")) return run_accel_bench_command(accel_bench);
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;
