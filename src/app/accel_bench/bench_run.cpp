@@ -166,9 +166,12 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
     result.rebuild_ms = pair.rebuild_sum / options.deform_frames;
     if (pair.can_refit) {
       result.refit_ms = pair.refit_sum / options.deform_frames;
-      pair.refitted.trace_closest(rays, refit_hits);
-      pair.rebuilt.trace_closest(rays, rebuild_hits);
-      check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits, refit_hits);
+      const double work = static_cast<double>(rays.size()) * mesh.triangle_count;
+      if (!pair.refitted.brute_force || work <= options.brute_force_limit) {
+        pair.refitted.trace_closest(rays, refit_hits);
+        pair.rebuilt.trace_closest(rays, rebuild_hits);
+        check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits, refit_hits);
+      }
       const auto refit_sah = pair.refitted.stats().sah, rebuild_sah = pair.rebuilt.stats().sah;
       if (refit_sah && rebuild_sah && *rebuild_sah > 0.0) result.sah_drift = *refit_sah / *rebuild_sah;
     }
