@@ -1,6 +1,7 @@
 // EmbreeScene's batch queries. Closest hits go to Embree in packets of 8 (rtcIntersect8), TBB chunks
-// of packets: on the project's CPU machine (2 cores, loaded) packets were about 1.2-1.3x faster than
-// rtcIntersect1 per ray for primary rays and no slower for reflection rays (docs/accel-bench.md).
+// of packets: on the project's CPU machine (2 cores, other builds running; atrium-simple, 320x180)
+// packets were about 1.2-1.3x faster than rtcIntersect1 per ray for primary rays and on average no
+// slower (noisy) for reflection rays.
 // Any-hit queries stay single-ray: shadow rays are incoherent and the bench does not time them.
 #include "accel/embree_scene.h"
 
