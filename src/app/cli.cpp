@@ -1,5 +1,6 @@
 #include "app/cli.h"
 
+#include "app/accel_bench_command.h"
 #include "app/compare_command.h"
 #include "app/devices_command.h"
 #include "app/info_command.h"
@@ -51,6 +52,8 @@ int run_cli(int argc, char** argv) {
   add_render_command(app, render);
   CompareOptions compare;
   add_compare_command(app, compare);
+  AccelBenchOptions accel_bench;
+  add_accel_bench_command(app, accel_bench);
 
   try {
     app.parse(argc, argv);
@@ -74,6 +77,7 @@ int run_cli(int argc, char** argv) {
       return run_render_command(render);
     }
     if (app.got_subcommand("compare")) return run_compare_command(compare);
+    if (app.got_subcommand("accel-bench")) return run_accel_bench_command(accel_bench);
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;

@@ -1,0 +1,85 @@
+#pragma once
+// accel-bench's measurements, independent of the command line: given a scene and options, build
+// every structure over the scene's world triangles, check their hits against the first one, time
+// their closest-hit queries, and compare rebuild with refit on the deforming meshes.
+#include "accel/ray.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace glint::accel_bench {
+
+enum class RayKind { primary, reflection, random };
+
+const char* ray_kind_name(RayKind kind);
+// "primary", "reflection", "random"; glint::Error otherwise.
+RayKind parse_ray_kind(std::string_view name);
+
+struct BenchOptions {
+  // Structures by candidate_menu() name, in this order; the first one traced is the reference.
+  std::vector<std::string> structures;
+  RayKind rays = RayKind::reflection;
+  std::vector<int> frames{1800, 2100, 2300, 4400};  // walkthrough frames whose cameras shoot the rays
+  int width = 640;
+  int height = 360;
+  int deform_frames = 100;  // 0 skips the deformation benchmark
+  uint32_t seed = 1;        // random rays
+  int timed_runs = 3;       // best of these, after one warm-up run (whose hits are checked)
+  // Brute-force structures are not traced when rays x triangles exceeds this (hours of work).
+  double brute_force_limit = 2e9;
+  // Test hook: called with each structure's name and hits after its warm-up trace, before the check,
+  // so a test can force a mismatch.
+  std::function<void(const std::string&, std::span<accel::Hit>)> tamper_hits;
+  // Progress lines (one per structure); nullptr for silence.
+  std::function<void(const std::string&)> progress;
+};
+
+struct StructureResult {
+  std::string name;
+  double build_ms = 0.0;
+  double mprims_per_s = 0.0;            // triangles / build time
+  std::optional<size_t> nodes;
+  size_t memory_bytes = 0;
+  std::optional<double> sah;
+  std::optional<double> mrays_per_s;    // best of timed_runs; nullopt when not traced
+  std::optional<double> ratio_to_embree_medium;  // mrays_per_s / embree-medium's
+  std::string skipped;                  // why it was not traced, when it was not
+};
+
+struct DeformResult {
+  std::string name;
+  double rebuild_ms = 0.0;              // mean per frame
+  std::optional<double> refit_ms;       // mean per frame; nullopt when the structure cannot refit
+  std::optional<double> sah_drift;      // SAH(refitted) / SAH(rebuilt) after the last frame
+};
+
+struct BenchReport {
+  std::string scene;
+  size_t scene_triangles = 0;
+  size_t scene_vertices = 0;
+  size_t instances = 0;
+  RayKind ray_kind = RayKind::reflection;
+  std::vector<int> frames;
+  int width = 0, height = 0;
+  size_t ray_count = 0;
+  size_t ray_hits = 0;                  // of the reference structure
+  std::string reference;                // the structure every other one was checked against
+  std::vector<StructureResult> structures;
+  // Deformation: the deformable meshes' instances alone, `deform_frames` frames of sine waves.
+  std::vector<std::string> deformable_meshes;
+  size_t deformable_triangles = 0;
+  int deform_frames = 0;
+  std::vector<DeformResult> deform;
+};
+
+// Runs the benchmark. `scene` is deformed in place by the deformation part (its deformable meshes
+// end posed at the last frame). glint::Error for an unknown structure, a frame outside the
+// walkthrough, no rays to trace, or a structure whose hits disagree with the reference's.
+BenchReport run_accel_bench(Scene& scene, const BenchOptions& options);
+
+}  // namespace glint::accel_bench

@@ -1,0 +1,54 @@
+#pragma once
+// The structures accel-bench compares, as a list of entries with one uniform interface. A new
+// structure (a kd-tree, a wide BVH, a GPU builder) is one more entry in candidate_menu(); BVH
+// builders come from accel::kAllBvhBuilders, so a builder added there appears here unasked.
+#include "accel/embree_device.h"
+#include "accel/ray.h"
+#include "accel/triangle_mesh.h"
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace glint::accel_bench {
+
+struct CandidateStats {
+  std::optional<size_t> nodes;   // unknown for Embree, which hides its nodes
+  size_t memory_bytes = 0;       // the structure itself (nodes + indices; Embree: what it allocated)
+  std::optional<double> sah;     // accel::compute_stats' SAH cost; unknown for Embree
+};
+
+// One built structure. The mesh given to build() must stay alive (and keep its index buffer) until
+// the next build; refit and trace use it.
+struct Candidate {
+  std::string name;
+  // Tracing tests every triangle: the bench skips timing it when rays x triangles is huge.
+  bool brute_force = false;
+  // (Re)builds over the mesh; returns the build time in ms.
+  std::function<double(const accel::TriangleMesh&)> build;
+  // Refits the last build to the mesh's moved vertices (same triangles); returns ms, or nullopt when
+  // this structure cannot refit (then the bench only rebuilds it).
+  std::function<std::optional<double>(const accel::TriangleMesh&)> refit;
+  std::function<void(std::span<const accel::Ray>, std::span<accel::Hit>)> trace_closest;
+  std::function<CandidateStats()> stats;
+};
+
+// A named way to make fresh, unbuilt candidates (the deformation benchmark needs two of each: one
+// refitted, one rebuilt every frame).
+struct CandidateEntry {
+  std::string name;
+  std::function<Candidate()> make;
+};
+
+// Every known structure: each accel::kAllBvhBuilders builder by its builder_name, then
+// "embree-low", "embree-medium", "embree-high", "embree-refit". `device` must outlive the candidates.
+std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
+
+// The names candidate_menu() has, without needing a device (for validating command lines).
+std::vector<std::string> candidate_names();
+std::vector<std::string> embree_candidate_names();
+
+}  // namespace glint::accel_bench

@@ -1,0 +1,33 @@
+#pragma once
+// `glint accel-bench [scene]`: builds every acceleration structure (glint's BVH builders and Embree's
+// qualities) over a scene's world triangles, checks they find the same hits, and times builds,
+// closest-hit queries, and rebuild vs refit of the deforming meshes. See docs/accel-bench.md.
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+struct AccelBenchOptions {
+  std::string scene = "atrium";
+  std::string builders = "all";       // "all" or comma-separated candidate names
+  std::string rays = "reflection";
+  std::string frames = "1800,2100,2300,4400";
+  int width = 640;
+  int height = 360;
+  int threads = 0;                    // 0: all hardware threads
+  std::string json;                   // empty: no JSON
+  int deform_frames = 100;
+  unsigned seed = 1;
+};
+
+void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options);
+int run_accel_bench_command(const AccelBenchOptions& options);
+
+// The parsed forms of --builders and --frames; glint::Error with a one-line reason for bad text.
+// Embree's four qualities are always appended (they are the reference columns) unless named already.
+std::vector<std::string> parse_structure_list(const std::string& text);
+std::vector<int> parse_frame_list(const std::string& text);
+
+}  // namespace glint

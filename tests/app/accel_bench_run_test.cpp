@@ -1,0 +1,203 @@
+// accel-bench end to end: in process on a scene built in code, and through the CLI.
+#include "app/accel_bench/bench_run.h"
+#include "app/accel_bench/candidates.h"
+#include "app/accel_bench/hit_check.h"
+#include "app/accel_bench/report_json.h"
+#include "app/accel_bench/report_table.h"
+#include "app/accel_bench_command.h"
+#include "app/cli_runner.h"
+#include "rt/tiny_scene.h"
+#include "support/error_of.h"
+#include "support/temp_folder.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace glint::accel_bench {
+namespace {
+
+BenchOptions small_options() {
+  BenchOptions options;
+  options.structures = candidate_names();
+  options.rays = RayKind::reflection;
+  options.frames = {0, 50, 99};
+  options.width = 48;
+  options.height = 32;
+  options.deform_frames = 4;
+  options.timed_runs = 1;
+  return options;
+}
+
+TEST(AccelBenchRun, EveryStructureIsBuiltCheckedTimedAndDeformed) {
+  Scene scene = glint::testing::make_tiny_scene(16);
+  std::vector<std::string> progress;
+  BenchOptions options = small_options();
+  options.progress = [&](const std::string& line) { progress.push_back(line); };
+  const BenchReport report = run_accel_bench(scene, options);
+
+  EXPECT_EQ(report.reference, "none");  // brute force is cheap here, so it is the reference
+  EXPECT_GT(report.ray_count, 100u);
+  EXPECT_GT(report.ray_hits, 0u);
+  EXPECT_EQ(report.scene_triangles, 4u + 2u * 16u * 16u * 2u);
+  ASSERT_EQ(report.structures.size(), options.structures.size());
+  for (size_t i = 0; i < report.structures.size(); ++i) {
+    const StructureResult& r = report.structures[i];
+    EXPECT_EQ(r.name, options.structures[i]);
+    EXPECT_TRUE(r.skipped.empty()) << r.name;
+    ASSERT_TRUE(r.mrays_per_s) << r.name;
+    EXPECT_GT(*r.mrays_per_s, 0.0) << r.name;
+    ASSERT_TRUE(r.ratio_to_embree_medium) << r.name;
+    EXPECT_GT(r.memory_bytes, 0u) << r.name;
+    const bool embree = r.name.rfind("embree-", 0) == 0;
+    EXPECT_EQ(r.nodes.has_value(), !embree) << r.name;
+    EXPECT_EQ(r.sah.has_value(), !embree) << r.name;
+  }
+  const auto medium = std::find_if(report.structures.begin(), report.structures.end(),
+                                   [](const StructureResult& r) { return r.name == "embree-medium"; });
+  ASSERT_NE(medium, report.structures.end());
+  EXPECT_DOUBLE_EQ(*medium->ratio_to_embree_medium, 1.0);
+  // SAH of a real BVH beats one leaf of everything.
+  const auto sah = std::find_if(report.structures.begin(), report.structures.end(),
+                                [](const StructureResult& r) { return r.name == "sah"; });
+  EXPECT_LT(*sah->sah, *report.structures[0].sah);
+
+  EXPECT_EQ(report.deformable_meshes, std::vector<std::string>{"sheet"});
+  EXPECT_EQ(report.deformable_triangles, 2u * 16u * 16u * 2u);
+  ASSERT_EQ(report.deform.size(), options.structures.size());
+  for (const DeformResult& d : report.deform) {
+    const bool refits = d.name.rfind("embree-", 0) != 0 || d.name == "embree-refit";
+    EXPECT_EQ(d.refit_ms.has_value(), refits) << d.name;
+    const bool has_sah = d.name.rfind("embree-", 0) != 0;
+    ASSERT_EQ(d.sah_drift.has_value(), has_sah) << d.name;
+    // Small waves: the refitted tree stays close to a fresh one.
+    if (has_sah) {
+      EXPECT_NEAR(*d.sah_drift, 1.0, 0.5) << d.name;
+    }
+  }
+  // One progress line per structure (static and deformation) plus the ray and deformation lines.
+  EXPECT_EQ(progress.size(), 3 * options.structures.size() + 2);
+
+  const std::string table = format_report_table(report);
+  for (const std::string& name : options.structures) EXPECT_NE(table.find(name), std::string::npos);
+  EXPECT_NE(table.find("SAH drift"), std::string::npos);
+}
+
+TEST(AccelBenchRun, AMismatchIsAnErrorNamingTheStructureAndRay) {
+  Scene scene = glint::testing::make_tiny_scene(4);
+  BenchOptions options = small_options();
+  options.structures = {"sah", "embree-medium"};
+  options.deform_frames = 0;
+  options.tamper_hits = [](const std::string& name, std::span<accel::Hit> hits) {
+    if (name == "embree-medium") hits[3].t *= 1.01f;
+  };
+  const std::string message = glint::testing::error_of([&] { (void)run_accel_bench(scene, options); });
+  EXPECT_NE(message.find("embree-medium disagrees with sah on ray 3"), std::string::npos) << message;
+}
+
+TEST(AccelBenchRun, HitAgreementAcceptsTiesAndRejectsRealDifferences) {
+  const accel::Hit miss;
+  const accel::Hit a{2.0f, 0, 5, 0.1f, 0.2f};
+  accel::Hit tie = a;
+  tie.prim = 6;
+  tie.t = 2.0f * (1.0f + 5e-5f);
+  accel::Hit far = a;
+  far.t = 2.001f;
+  EXPECT_FALSE(hit_disagreement(a, a));
+  EXPECT_FALSE(hit_disagreement(miss, miss));
+  EXPECT_FALSE(hit_disagreement(a, tie));
+  EXPECT_TRUE(hit_disagreement(a, far));
+  EXPECT_TRUE(hit_disagreement(a, miss));
+  EXPECT_TRUE(hit_disagreement(miss, a));
+}
+
+TEST(AccelBenchRun, BadOptionsAreClearErrors) {
+  Scene scene = glint::testing::make_tiny_scene(4);
+  BenchOptions options = small_options();
+  options.frames = {100};
+  EXPECT_NE(glint::testing::error_of([&] { (void)run_accel_bench(scene, options); }).find("frame 100 is outside"),
+            std::string::npos);
+  options = small_options();
+  options.structures = {"sah", "kd-magic"};
+  EXPECT_NE(glint::testing::error_of([&] { (void)run_accel_bench(scene, options); }).find("unknown structure \"kd-magic\""),
+            std::string::npos);
+  EXPECT_THROW((void)parse_structure_list("sah,,median"), Error);
+  EXPECT_THROW((void)parse_frame_list("1,-2"), Error);
+  EXPECT_THROW((void)parse_frame_list("12x"), Error);
+  EXPECT_EQ(parse_frame_list("0,7,4400"), (std::vector<int>{0, 7, 4400}));
+  // Embree's qualities are always added, after the named ones, without duplicates.
+  EXPECT_EQ(parse_structure_list("sah,embree-high"),
+            (std::vector<std::string>{"sah", "embree-high", "embree-low", "embree-medium", "embree-refit"}));
+}
+
+TEST(AccelBenchRun, JsonHasTheMachineAndOneRowPerStructure) {
+  Scene scene = glint::testing::make_tiny_scene(4);
+  BenchOptions options = small_options();
+  options.deform_frames = 2;
+  const BenchReport report = run_accel_bench(scene, options);
+  const glint::testing::TempFolder folder;
+  const auto path = folder.path() / "bench.json";
+  write_json_atomically(path, report_json(report, current_machine(3)));
+  const nlohmann::json j = nlohmann::json::parse(glint::testing::read_text_file(path));
+  EXPECT_EQ(j["machine"]["threads"], 3);
+  EXPECT_FALSE(j["machine"]["cpu"].get<std::string>().empty());
+  EXPECT_EQ(j["scene"]["name"], "tiny");
+  EXPECT_EQ(j["rays"]["count"], report.ray_count);
+  ASSERT_EQ(j["structures"].size(), options.structures.size());
+  for (size_t i = 0; i < options.structures.size(); ++i) EXPECT_EQ(j["structures"][i]["name"], options.structures[i]);
+  EXPECT_EQ(j["deformation"]["structures"].size(), options.structures.size());
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path()), {}), 1);  // no temp file left
+  EXPECT_THROW(write_json_atomically(folder.path() / "missing" / "x.json", j), Error);
+}
+
+}  // namespace
+}  // namespace glint::accel_bench
+
+namespace glint::testing {
+namespace {
+
+TEST(AccelBenchCli, WritesValidJsonWithOneRowPerStructure) {
+  const TempFolder folder;
+  const auto json_path = folder.path() / "out.json";
+  const CliResult r = run_glint("accel-bench atrium-simple --builders sah --rays primary --frames 1800 --width 24 "
+                                "--height 16 --threads 2 --deform-frames 1 --json \"" + json_path.string() + "\"");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_text_file(json_path));
+  ASSERT_EQ(j["structures"].size(), 5u);  // sah + Embree's four
+  EXPECT_EQ(j["structures"][0]["name"], "sah");
+  EXPECT_EQ(j["rays"]["count"], 24 * 16);
+  EXPECT_EQ(j["machine"]["threads"], 2);
+  EXPECT_EQ(j["deformation"]["frames"], 1);
+  EXPECT_NE(r.out.find("embree-medium"), std::string::npos);
+  EXPECT_NE(r.err.find("accel-bench: sah: built"), std::string::npos);  // progress on stderr
+}
+
+TEST(AccelBenchCli, BadFlagsAreUsageErrorsWithExitCode2) {
+  for (const char* args : {"accel-bench --builders sah,nope", "accel-bench --frames 1800,abc", "accel-bench --frames ''",
+                           "accel-bench --rays sideways", "accel-bench --width 0", "accel-bench --threads -1"}) {
+    const CliResult r = run_glint(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_TRUE(r.out.empty()) << args;
+    EXPECT_LE(line_count(r.err), 2) << args << ": " << r.err;  // the reason, and CLI11's pointer to --help
+  }
+  const CliResult builder = run_glint("accel-bench --builders sah,nope");
+  EXPECT_NE(builder.err.find("unknown builder \"nope\""), std::string::npos) << builder.err;
+}
+
+TEST(AccelBenchCli, FrameOutsideTheWalkthroughIsOneLineAndExit1) {
+  const CliResult r = run_glint("accel-bench atrium-simple --frames 99999 --width 4 --height 4");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("frame 99999 is outside"), std::string::npos) << r.err;
+}
+
+TEST(AccelBenchCli, HelpExplainsEveryOption) {
+  const CliResult r = run_glint("accel-bench --help");
+  EXPECT_EQ(r.exit_code, 0);
+  for (const char* option : {"--builders", "--rays", "--frames", "--width", "--height", "--threads", "--json",
+                             "--deform-frames", "--seed", "reflection", "embree-refit"})
+    EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+}  // namespace
+}  // namespace glint::testing
