@@ -1,12 +1,11 @@
 #include "app/accel_bench/report_json.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 #include <chrono>
 #include <ctime>
 #include <fstream>
-#include <system_error>
-#include <unistd.h>
 
 namespace glint::accel_bench {
 namespace {
@@ -78,23 +77,7 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
 }
 
 void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json) {
-  std::filesystem::path temp = path;
-  temp += ".tmp";
-  temp += std::to_string(::getpid());
-  {
-    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    if (!file) fail("{}: cannot open for writing", temp.string());
-    file << json.dump(2) << '\n';
-    file.flush();
-    if (!file) fail("{}: write failed", temp.string());
-  }
-  std::error_code error;
-  std::filesystem::rename(temp, path, error);
-  if (error) {
-    const std::string reason = error.message();
-    std::filesystem::remove(temp, error);
-    fail("{}: cannot write: {}", path.string(), reason);
-  }
+  write_file_atomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace glint::accel_bench
