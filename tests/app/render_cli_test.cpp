@@ -1,0 +1,119 @@
+// `glint render` as a user runs it: the files it promises, their shapes, and one-line errors that
+// leave nothing behind.
+#include "app/cli_runner.h"
+#include "app/video_writer.h"
+#include "core/image.h"
+#include "support/temp_folder.h"
+#include "../gl/gl_test_context.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace glint::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+// GlTest skips every test when this machine has no headless OpenGL 4.5 (the command would fail).
+using RenderCli = GlTest;
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream text(read_text_file(path));
+  for (std::string line; std::getline(text, line);) {
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+std::string quoted(const fs::path& path) { return "\"" + path.string() + "\""; }
+
+TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
+  TempFolder folder;
+  const fs::path out = folder.path() / "run";
+  const bool video = find_program_on_path("ffmpeg").has_value();
+  const CliResult r = run_glint("render atrium-simple --width 64 --height 36 --frames 2100:2101 --debug-views --out " +
+                                quoted(out) + (video ? " --video" : ""));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  for (const char* frame : {"frame_02100", "frame_02101"}) {
+    const ImageRgba8 image = read_png(out / (std::string(frame) + ".png"));
+    EXPECT_EQ(image.width, 64);
+    EXPECT_EQ(image.height, 36);
+    for (const char* view : {"albedo", "normals", "positions", "depth", "shadow_mask", "ssr_reflection", "failure_mask"})
+      EXPECT_TRUE(fs::exists(out / (std::string(frame) + "_" + view + ".png"))) << frame << " " << view;
+  }
+  if (video) {
+    EXPECT_GT(fs::file_size(out / "walkthrough.mp4"), 0u);
+  }
+
+  const auto csv = read_csv(out / "timings.csv");
+  ASSERT_EQ(csv.size(), 3u) << "header + one row per frame";
+  const std::vector<std::string> header = {"frame", "shadow_ms", "gbuffer_ms", "light_ms", "ssr_ms", "resolve_ms",
+                                           "gpu_total_ms", "cpu_frame_ms", "deform_ms", "triangles",
+                                           "reflective_pixels", "ssr_failed_pixels"};
+  EXPECT_EQ(csv[0], header);
+  EXPECT_EQ(csv[1][0], "2100");
+  EXPECT_EQ(csv[2][0], "2101");
+  for (std::size_t row = 1; row < csv.size(); ++row) {
+    ASSERT_EQ(csv[row].size(), header.size());
+    for (std::size_t column = 1; column < header.size(); ++column)
+      EXPECT_GE(std::stod(csv[row][column]), 0.0) << header[column];
+    EXPECT_LE(std::stoul(csv[row][11]), std::stoul(csv[row][10])) << "failed pixels are reflective pixels";
+  }
+
+  const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
+  EXPECT_FALSE(run["gl"]["renderer"].get<std::string>().empty());
+  EXPECT_EQ(run["resolution"], nlohmann::json::array({64, 36}));
+  EXPECT_EQ(run["frames"]["count"], 2);
+  EXPECT_EQ(run["frames_rendered"], 2);
+  EXPECT_EQ(run["options"]["reflections"], "ssr");
+  EXPECT_EQ(run["scene"]["name"], "atrium-simple");
+  EXPECT_NE(run["command"].get<std::string>().find("render atrium-simple"), std::string::npos);
+
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary left behind: " << entry.path();
+}
+
+TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmpty) {
+  TempFolder folder;
+  const fs::path out = folder.path() / "off";
+  const CliResult r = run_glint("render atrium-simple --reflections off --width 32 --height 18 --frames 0 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto csv = read_csv(out / "timings.csv");
+  ASSERT_EQ(csv.size(), 2u);
+  ASSERT_EQ(csv[1].size(), 12u);
+  EXPECT_EQ(csv[1][4], "") << "ssr_ms";
+  EXPECT_EQ(csv[1][10], "") << "reflective_pixels";
+  EXPECT_EQ(csv[1][11], "") << "ssr_failed_pixels";
+}
+
+TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
+  TempFolder folder;
+  const fs::path out = folder.path() / "bad";
+  const CliResult past_end = run_glint("render atrium-simple --frames 5000 --out " + quoted(out));
+  EXPECT_EQ(past_end.exit_code, 1);
+  EXPECT_EQ(line_count(past_end.err), 1) << past_end.err;
+  EXPECT_NE(past_end.err.find("5000"), std::string::npos) << past_end.err;
+  EXPECT_FALSE(fs::exists(out)) << "no output folder for a run that never started";
+
+  EXPECT_EQ(run_glint("render atrium-simple --reflections maybe --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint("render atrium-simple --width 0 --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint("render atrium-simple --frames 3:1 --out " + quoted(out)).exit_code, 1);
+  const CliResult missing = run_glint("render /nonexistent/scene.obj --out " + quoted(out));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/scene.obj"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace glint::testing
