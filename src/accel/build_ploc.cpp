@@ -1,0 +1,150 @@
+#include "accel/build_ploc.h"
+
+#include "accel/binary_tree.h"
+#include "accel/bvh_collapse_leaves.h"
+#include "accel/morton.h"
+#include "core/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_scan.h>
+
+#include <chrono>
+
+namespace glint::accel {
+namespace {
+
+using detail::BinaryTree;
+using detail::kNoNode;
+
+// The clusters of one iteration, in Morton order: tree node and its box (kept here as well so the
+// neighbour search reads consecutive memory).
+struct Clusters {
+  std::vector<uint32_t> nodes;
+  std::vector<Aabb> boxes;
+
+  uint32_t size() const { return static_cast<uint32_t>(nodes.size()); }
+};
+
+// Nearest neighbour of every cluster within `radius` positions. Distances are symmetric and ties go
+// to the smaller position: that orders all candidate pairs strictly by (distance, lower position,
+// higher position), so the globally least pair is always mutual and every iteration merges at
+// least one pair.
+void find_nearest_neighbours(const Clusters& clusters, uint32_t radius, std::vector<uint32_t>& nearest) {
+  const uint32_t count = clusters.size();
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 256), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t i = r.begin(); i != r.end(); ++i) {
+      const uint32_t begin = i > radius ? i - radius : 0;
+      const uint32_t end = count - 1 - i > radius ? i + radius + 1 : count;
+      uint32_t best = kNoNode;
+      float best_distance = 0.0f;
+      for (uint32_t j = begin; j != end; ++j) {
+        if (j == i) continue;
+        Aabb merged = clusters.boxes[i];
+        merged.extend(clusters.boxes[j]);
+        const float distance = half_area(merged);
+        if (best == kNoNode || distance < best_distance) {
+          best = j;
+          best_distance = distance;
+        }
+      }
+      nearest[i] = best;
+    }
+  });
+}
+
+// Per position: 1 when it starts a merge (mutual neighbours, lower position of the pair), and 1
+// when it survives compaction (not the higher position of a mutual pair).
+struct ScanCounts {
+  uint32_t merges = 0;
+  uint32_t survivors = 0;
+};
+
+void merge_and_compact(BinaryTree& tree, Clusters& clusters, const std::vector<uint32_t>& nearest,
+                       uint32_t& next_node, Clusters& next) {
+  const uint32_t count = clusters.size();
+  const auto merges_here = [&](uint32_t i) { return nearest[nearest[i]] == i && i < nearest[i]; };
+  const auto survives = [&](uint32_t i) { return nearest[nearest[i]] != i || i < nearest[i]; };
+
+  // Exclusive prefix sums: the new tree node of each merge and the new position of each survivor.
+  std::vector<ScanCounts> offsets(count);
+  const ScanCounts totals = tbb::parallel_scan(
+      tbb::blocked_range<uint32_t>(0, count, 4096), ScanCounts{},
+      [&](const tbb::blocked_range<uint32_t>& r, ScanCounts running, bool is_final) {
+        for (uint32_t i = r.begin(); i != r.end(); ++i) {
+          if (is_final) offsets[i] = running;
+          running.merges += merges_here(i) ? 1u : 0u;
+          running.survivors += survives(i) ? 1u : 0u;
+        }
+        return running;
+      },
+      [](const ScanCounts& a, const ScanCounts& b) { return ScanCounts{a.merges + b.merges, a.survivors + b.survivors}; });
+
+  next.nodes.resize(totals.survivors);
+  next.boxes.resize(totals.survivors);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 4096), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t i = r.begin(); i != r.end(); ++i) {
+      if (!survives(i)) continue;
+      const uint32_t slot = offsets[i].survivors;
+      if (!merges_here(i)) {
+        next.nodes[slot] = clusters.nodes[i];
+        next.boxes[slot] = clusters.boxes[i];
+        continue;
+      }
+      const uint32_t j = nearest[i];
+      const uint32_t node = next_node + offsets[i].merges;
+      Aabb box = clusters.boxes[i];
+      box.extend(clusters.boxes[j]);
+      detail::TreeNode& merged = tree.nodes[node];
+      merged.left = clusters.nodes[i];
+      merged.right = clusters.nodes[j];
+      merged.box = box;
+      tree.nodes[merged.left].parent = node;
+      tree.nodes[merged.right].parent = node;
+      next.nodes[slot] = node;
+      next.boxes[slot] = box;
+    }
+  });
+  next_node += totals.merges;
+  std::swap(clusters, next);
+}
+
+BinaryTree build_ploc_tree(const BuildInput& input, uint32_t radius) {
+  const MortonOrder order = sort_by_morton(input.centroids);
+  BinaryTree tree = detail::make_leaves(input, order.prims);
+  const uint32_t count = tree.leaf_count;
+  if (count < 2) return tree;
+
+  Clusters clusters;
+  clusters.nodes.resize(count);
+  clusters.boxes.resize(count);
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 8192), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t i = r.begin(); i != r.end(); ++i) {
+      clusters.nodes[i] = i;
+      clusters.boxes[i] = tree.nodes[i].box;
+    }
+  });
+  Clusters next;
+  std::vector<uint32_t> nearest(count);
+  uint32_t next_node = count;
+  while (clusters.size() > 1) {
+    find_nearest_neighbours(clusters, radius, nearest);
+    merge_and_compact(tree, clusters, nearest, next_node, next);
+  }
+  tree.root = clusters.nodes[0];
+  return tree;
+}
+
+}  // namespace
+
+Bvh build_ploc(const BuildInput& input, const BuildOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  detail::check_build_input(input, options, "ploc");
+  if (options.ploc_radius < 1) fail("accel: build_ploc: ploc_radius must be at least 1, got {}", options.ploc_radius);
+  BinaryTree tree = build_ploc_tree(input, options.ploc_radius);
+  Bvh bvh = detail::flatten_tree(tree, options, "ploc");
+  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return bvh;
+}
+
+}  // namespace glint::accel
