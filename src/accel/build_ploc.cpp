@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_scan.h>
 
+#include <algorithm>
 #include <chrono>
 
 namespace glint::accel {
@@ -26,10 +27,17 @@ struct Clusters {
   uint32_t size() const { return static_cast<uint32_t>(nodes.size()); }
 };
 
-// Nearest neighbour of every cluster within `radius` positions. Distances are symmetric and ties go
-// to the smaller position: that orders all candidate pairs strictly by (distance, lower position,
-// higher position), so the globally least pair is always mutual and every iteration merges at
-// least one pair.
+// Nearest neighbour of every cluster within `radius` positions. Distances are symmetric, and ties
+// are broken by a key of the pair alone (tie_key), so all candidate pairs are strictly ordered by
+// (distance, key): the globally least pair is then mutual and every iteration merges at least one.
+// Among pairs at equal distance prefer neighbours (smaller gap), then pairs starting at an even
+// position, then the earlier pair. The parity term matters for runs of identical boxes: it pairs
+// (0, 1), (2, 3), ... so such a run halves in every iteration instead of losing one cluster.
+uint64_t tie_key(uint32_t i, uint32_t j) {
+  const uint32_t first = std::min(i, j), gap = std::max(i, j) - first;
+  return (uint64_t{gap} << 33) | (uint64_t{first & 1u} << 32) | first;
+}
+
 void find_nearest_neighbours(const Clusters& clusters, uint32_t radius, std::vector<uint32_t>& nearest) {
   const uint32_t count = clusters.size();
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 256), [&](const tbb::blocked_range<uint32_t>& r) {
@@ -43,7 +51,8 @@ void find_nearest_neighbours(const Clusters& clusters, uint32_t radius, std::vec
         Aabb merged = clusters.boxes[i];
         merged.extend(clusters.boxes[j]);
         const float distance = half_area(merged);
-        if (best == kNoNode || distance < best_distance) {
+        if (best == kNoNode || distance < best_distance ||
+            (distance == best_distance && tie_key(i, j) < tie_key(i, best))) {
           best = j;
           best_distance = distance;
         }
