@@ -15,7 +15,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -231,6 +233,39 @@ TEST(Ploc, RadiusIsAnOptionAndZeroIsAnError) {
     const BuildInput input{std::span(boxes).first(count), std::span(centroids).first(count)};
     EXPECT_NO_THROW(validate_bvh(build_ploc(input, options), input.boxes, options.max_leaf_size));
   }
+}
+
+TEST(Ploc, AWindowOverEverythingIsExactGreedyClustering) {
+  // With the radius covering all clusters, the nearest neighbours are global, and merging all mutual
+  // pairs per iteration builds the same tree as merging the globally closest pair one at a time
+  // (Walter et al. 2008's agglomerative clustering), done here by brute force. Compared by SAH cost.
+  const testing::TestMesh scene = testing::make_random_soup(47, 300);
+  const PrimitiveBounds bounds = triangle_bounds(scene.view());
+  std::vector<Aabb> clusters = bounds.boxes;
+  double interior_area = 0.0, leaf_area = 0.0;
+  for (const Aabb& box : clusters) leaf_area += half_area(box);
+  while (clusters.size() > 1) {
+    float best = std::numeric_limits<float>::infinity();
+    size_t best_i = 0, best_j = 1;
+    for (size_t i = 0; i < clusters.size(); ++i)
+      for (size_t j = i + 1; j < clusters.size(); ++j) {
+        Aabb merged = clusters[i];
+        merged.extend(clusters[j]);
+        if (half_area(merged) < best) {
+          best = half_area(merged);
+          best_i = i;
+          best_j = j;
+        }
+      }
+    clusters[best_i].extend(clusters[best_j]);
+    interior_area += half_area(clusters[best_i]);
+    clusters.erase(clusters.begin() + static_cast<std::ptrdiff_t>(best_j));
+  }
+  BuildOptions options;
+  options.max_leaf_size = 1;
+  options.ploc_radius = 300;
+  const double greedy = (options.traversal_cost * interior_area + leaf_area) / half_area(clusters[0]);
+  EXPECT_NEAR(compute_stats(build_ploc(bounds.input(), options)).sah_cost, greedy, 1e-6 * greedy);
 }
 
 }  // namespace

@@ -142,6 +142,8 @@ double sah_cost(BvhBuilder builder, const PrimitiveBounds& bounds) {
   return compute_stats(build_bvh(builder, bounds.input())).sah_cost;
 }
 
+// Measured: clustered 3.46 -> 3.21, atrium piece 23.48 -> 19.59. Restructuring only accepts cheaper
+// treelets, so this holds up to rounding (1e-9 relative).
 TEST(BuilderMenuQuality, TreeletRestructuringNeverLosesToLbvh) {
   const TestMesh clustered = testing::make_clustered(104, 30000);
   const TestMesh* scenes[] = {&clustered, &menu_scene("atrium").mesh};
@@ -154,6 +156,8 @@ TEST(BuilderMenuQuality, TreeletRestructuringNeverLosesToLbvh) {
   }
 }
 
+// Measured (CPU, 2 cores): sah 18.82, ploc 21.58 on this atrium piece (ratio 1.15); 1.3 leaves a
+// margin. Greedy clustering by merged-box area is not the SAH, so PLOC need not reach binned SAH.
 TEST(BuilderMenuQuality, PlocIsCloseToBinnedSahOnTheAtrium) {
   const PrimitiveBounds bounds = triangle_bounds(menu_scene("atrium").mesh.view());
   const double sah = sah_cost(BvhBuilder::sah, bounds);
