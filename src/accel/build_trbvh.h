@@ -5,7 +5,9 @@
 // treelet leaf with the largest surface area; dynamic programming over all subsets of those leaves
 // finds the treelet topology of least SAH cost (leaf collapsing included), which replaces the old
 // one when it is cheaper. Nodes are processed in parallel once both children are done, so every
-// treelet sees already optimised subtrees. Then the same leaf collapsing as lbvh.
+// treelet sees already optimised subtrees. Round r restructures nodes with at least 7 * 2^r
+// primitives below (later rounds refine the upper levels, where most of the remaining cost is).
+// Then the same leaf collapsing as lbvh.
 #include "accel/binary_tree.h"
 #include "accel/build_options.h"
 #include "accel/bvh.h"
