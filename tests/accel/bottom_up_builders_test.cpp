@@ -13,6 +13,7 @@
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -232,6 +233,25 @@ TEST(Ploc, RadiusIsAnOptionAndZeroIsAnError) {
   for (const size_t count : {size_t{2}, size_t{5000}}) {
     const BuildInput input{std::span(boxes).first(count), std::span(centroids).first(count)};
     EXPECT_NO_THROW(validate_bvh(build_ploc(input, options), input.boxes, options.max_leaf_size));
+  }
+}
+
+TEST(BottomUpBuilders, OutputDoesNotDependOnTheThreadCount) {
+  // Node ids come from sorted positions and prefix sums, never from which thread got there first:
+  // one thread and all threads must give identical arrays.
+  const testing::TestMesh scene = testing::make_degenerate_soup(48, 30000);
+  const PrimitiveBounds bounds = triangle_bounds(scene.view());
+  BuildOptions options;
+  options.parallel_threshold = 64;
+  for (const auto build : {&build_lbvh, &build_trbvh, &build_ploc}) {
+    const Bvh parallel = build(bounds.input(), options);
+    Bvh serial;
+    tbb::task_arena(1).execute([&] { serial = build(bounds.input(), options); });
+    ASSERT_EQ(parallel.nodes.size(), serial.nodes.size()) << parallel.builder;
+    EXPECT_EQ(0, std::memcmp(parallel.nodes.data(), serial.nodes.data(), serial.nodes.size() * sizeof(BvhNode)))
+        << parallel.builder;
+    EXPECT_EQ(parallel.prim_indices, serial.prim_indices) << parallel.builder;
+    EXPECT_EQ(parallel.depth, serial.depth) << parallel.builder;
   }
 }
 
