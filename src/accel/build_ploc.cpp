@@ -27,9 +27,6 @@ struct Clusters {
   uint32_t size() const { return static_cast<uint32_t>(nodes.size()); }
 };
 
-// Nearest neighbour of every cluster within `radius` positions. Distances are symmetric, and ties
-// are broken by a key of the pair alone (tie_key), so all candidate pairs are strictly ordered by
-// (distance, key): the globally least pair is then mutual and every iteration merges at least one.
 // Among pairs at equal distance prefer neighbours (smaller gap), then pairs starting at an even
 // position, then the earlier pair. The parity term matters for runs of identical boxes: it pairs
 // (0, 1), (2, 3), ... so such a run halves in every iteration instead of losing one cluster.
@@ -38,27 +35,37 @@ uint64_t tie_key(uint32_t i, uint32_t j) {
   return (uint64_t{gap} << 33) | (uint64_t{first & 1u} << 32) | first;
 }
 
+// Nearest neighbour of every cluster within `radius` positions. Distances are symmetric, and ties
+// are broken by a key of the pair alone (tie_key), so all candidate pairs are strictly ordered by
+// (distance, key): the globally least pair is then mutual and every iteration merges at least one.
+// Because that order is strict, the result does not depend on the order of evaluation, which lets
+// each chunk of positions evaluate every pair once and offer it to both ends.
 void find_nearest_neighbours(const Clusters& clusters, uint32_t radius, std::vector<uint32_t>& nearest) {
   const uint32_t count = clusters.size();
-  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 256), [&](const tbb::blocked_range<uint32_t>& r) {
-    for (uint32_t i = r.begin(); i != r.end(); ++i) {
-      const uint32_t begin = i > radius ? i - radius : 0;
-      const uint32_t end = count - 1 - i > radius ? i + radius + 1 : count;
-      uint32_t best = kNoNode;
-      float best_distance = 0.0f;
-      for (uint32_t j = begin; j != end; ++j) {
-        if (j == i) continue;
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 1024), [&](const tbb::blocked_range<uint32_t>& r) {
+    const uint32_t begin = r.begin(), end = r.end();
+    std::vector<uint32_t> best(end - begin, kNoNode);
+    std::vector<float> best_distance(end - begin, 0.0f);
+    const auto offer = [&](uint32_t i, uint32_t j, float distance) {
+      const uint32_t slot = i - begin;
+      if (best[slot] == kNoNode || distance < best_distance[slot] ||
+          (distance == best_distance[slot] && tie_key(i, j) < tie_key(i, best[slot]))) {
+        best[slot] = j;
+        best_distance[slot] = distance;
+      }
+    };
+    // Pairs (i, j) with i < j <= i + radius and at least one end in [begin, end).
+    for (uint32_t i = begin > radius ? begin - radius : 0; i < end; ++i) {
+      const uint32_t last = count - 1 - i > radius ? i + radius : count - 1;
+      for (uint32_t j = std::max(i + 1, begin); j <= last; ++j) {
         Aabb merged = clusters.boxes[i];
         merged.extend(clusters.boxes[j]);
         const float distance = half_area(merged);
-        if (best == kNoNode || distance < best_distance ||
-            (distance == best_distance && tie_key(i, j) < tie_key(i, best))) {
-          best = j;
-          best_distance = distance;
-        }
+        if (i >= begin) offer(i, j, distance);
+        if (j < end) offer(j, i, distance);
       }
-      nearest[i] = best;
     }
+    std::copy(best.begin(), best.end(), nearest.begin() + begin);
   });
 }
 
