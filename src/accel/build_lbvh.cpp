@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include <bit>
+#include <algorithm>
 #include <chrono>
 
 namespace glint::accel {

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <bit>
 #include <chrono>
+#include <limits>
 
 namespace glint::accel {
 namespace detail {

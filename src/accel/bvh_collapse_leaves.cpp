@@ -2,7 +2,9 @@
 
 #include <tbb/task_group.h>
 
+#include <algorithm>
 #include <bit>
+#include <vector>
 
 namespace glint::accel::detail {
 namespace {
