@@ -5,8 +5,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <chrono>
 
 namespace glint::accel {
