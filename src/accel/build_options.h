@@ -19,6 +19,11 @@ struct BuildOptions {
   // Subtrees with at least this many primitives are built as separate TBB tasks; below it the
   // task overhead outweighs the work.
   uint32_t parallel_threshold = 4096;
+  // trbvh: rounds of treelet restructuring after the LBVH (Karras & Aila 2013 use 3).
+  uint32_t treelet_rounds = 3;
+  // ploc: a cluster looks for its nearest neighbour among this many clusters on either side in
+  // Morton order (Meister & Bittner 2018: 16 is close to the quality of larger radii), >= 1.
+  uint32_t ploc_radius = 16;
 };
 
 // The builders' input. boxes[i] bounds primitive i; centroids[i] is the point used to sort it

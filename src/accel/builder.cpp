@@ -1,12 +1,16 @@
 #include "accel/builder.h"
 
+#include "accel/build_lbvh.h"
 #include "accel/build_median.h"
 #include "accel/build_none.h"
+#include "accel/build_ploc.h"
 #include "accel/build_sah.h"
+#include "accel/build_trbvh.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
 
 #include <chrono>
+#include <string>
 
 namespace glint::accel {
 
@@ -15,6 +19,9 @@ std::string_view builder_name(BvhBuilder builder) {
     case BvhBuilder::none: return "none";
     case BvhBuilder::median: return "median";
     case BvhBuilder::sah: return "sah";
+    case BvhBuilder::lbvh: return "lbvh";
+    case BvhBuilder::trbvh: return "trbvh";
+    case BvhBuilder::ploc: return "ploc";
   }
   return "unknown";
 }
@@ -22,7 +29,12 @@ std::string_view builder_name(BvhBuilder builder) {
 BvhBuilder parse_bvh_builder(std::string_view name) {
   for (BvhBuilder builder : kAllBvhBuilders)
     if (builder_name(builder) == name) return builder;
-  fail("accel: unknown BVH builder '{}' (known: none, median, sah)", name);
+  std::string known;
+  for (BvhBuilder builder : kAllBvhBuilders) {
+    if (!known.empty()) known += ", ";
+    known += builder_name(builder);
+  }
+  fail("accel: unknown BVH builder '{}' (known: {})", name, known);
 }
 
 Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
@@ -30,6 +42,9 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
     case BvhBuilder::none: return build_none(input, options);
     case BvhBuilder::median: return build_median(input, options);
     case BvhBuilder::sah: return build_sah(input, options);
+    case BvhBuilder::lbvh: return build_lbvh(input, options);
+    case BvhBuilder::trbvh: return build_trbvh(input, options);
+    case BvhBuilder::ploc: return build_ploc(input, options);
   }
   fail("accel: invalid BvhBuilder value {}", static_cast<int>(builder));
 }

@@ -9,9 +9,10 @@
 
 namespace glint::accel {
 
-enum class BvhBuilder { none, median, sah };
+enum class BvhBuilder { none, median, sah, lbvh, trbvh, ploc };
 
-inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none, BvhBuilder::median, BvhBuilder::sah};
+inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none,  BvhBuilder::median, BvhBuilder::sah,
+                                                 BvhBuilder::lbvh,  BvhBuilder::trbvh,  BvhBuilder::ploc};
 
 std::string_view builder_name(BvhBuilder builder);
 // Inverse of builder_name; glint::Error listing the known names otherwise.

@@ -140,6 +140,66 @@ TestMesh make_clustered(uint32_t seed, uint32_t triangle_count) {
   return mesh;
 }
 
+TestMesh make_degenerate_soup(uint32_t seed, uint32_t triangle_count) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::uniform_int_distribution<int> sixty_fourths(1, 64);
+  TestMesh mesh;
+  // Dyadic centre and offsets: centre +- offset is exact in float, so every box of the kind below
+  // has exactly this centre.
+  const vec3 shared_center(0.5f, 0.25f, -0.75f);
+  while (mesh.triangle_count() < triangle_count) {
+    const float kind = u(rng);
+    const vec3 center = uniform_in(rng, vec3(-1.0f), vec3(1.0f));
+    if (kind < 0.15f || mesh.triangle_count() < 4) {  // zero area
+      const vec3 a = center, b = center + 0.1f * uniform_in(rng, vec3(-1.0f), vec3(1.0f));
+      const float how = u(rng);
+      if (how < 0.3f) {
+        mesh.add_triangle(a, a, b);  // repeated corner
+      } else if (how < 0.6f) {
+        mesh.add_triangle(a, 0.5f * (a + b), b);  // collinear
+      } else if (how < 0.8f) {
+        mesh.add_triangle(a, a, a);  // a point
+      } else {
+        const uint32_t i = mesh.add_vertex(a), j = mesh.add_vertex(b);
+        mesh.add_triangle(i, j, i);  // repeated index
+      }
+    } else if (kind < 0.35f) {  // coplanar and overlapping: all on z = 0.125 near the origin
+      vec3 p[3];
+      for (vec3& q : p) q = vec3(0.3f * (u(rng) - 0.5f), 0.3f * (u(rng) - 0.5f), 0.125f);
+      mesh.add_triangle(p[0], p[1], p[2]);
+    } else if (kind < 0.50f) {  // exact duplicate of an earlier triangle, by index or by value
+      const auto source = static_cast<uint32_t>(u(rng) * static_cast<float>(mesh.triangle_count() - 1));
+      const uint32_t* tri = &mesh.indices[3 * size_t{source}];
+      const uint32_t a = tri[0], b = tri[1], c = tri[2];
+      if (u(rng) < 0.5f) {
+        mesh.add_triangle(a, b, c);
+      } else {
+        const vec3 pa = mesh.positions[a], pb = mesh.positions[b], pc = mesh.positions[c];
+        mesh.add_triangle(pa, pb, pc);
+      }
+    } else if (kind < 0.53f) {  // huge
+      mesh.add_triangle(uniform_in(rng, vec3(-1e3f), vec3(1e3f)), uniform_in(rng, vec3(-1e3f), vec3(1e3f)),
+                        uniform_in(rng, vec3(-1e3f), vec3(1e3f)));
+    } else if (kind < 0.68f) {  // tiny
+      mesh.add_triangle(center + 1e-5f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)),
+                        center + 1e-5f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)),
+                        center + 1e-5f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)));
+    } else if (kind < 0.78f) {  // identical centroids: the box is shared_center +- (sx, sy, sz)
+      const auto step = [&] { return static_cast<float>(sixty_fourths(rng)) / 64.0f; };
+      const float sx = step(), sy = step(), sz = step();
+      const float fx = (u(rng) < 0.5f ? -1.0f : 1.0f) * sx * 0.5f, fy = (u(rng) < 0.5f ? -1.0f : 1.0f) * sy * 0.5f;
+      mesh.add_triangle(shared_center + vec3(sx, sy, sz), shared_center + vec3(-sx, -sy, sz),
+                        shared_center + vec3(fx, fy, -sz));
+    } else {  // ordinary small triangle
+      mesh.add_triangle(center + 0.05f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)),
+                        center + 0.05f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)),
+                        center + 0.05f * uniform_in(rng, vec3(-1.0f), vec3(1.0f)));
+    }
+  }
+  return mesh;
+}
+
 std::vector<Ray> make_random_rays(const TestMesh& mesh, uint32_t seed, size_t count, const RayOptions& options) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -35,6 +35,12 @@ TestMesh make_grid(uint32_t cells, bool tilted);
 // Gaussian clusters of very different sizes: where SAH and the median split disagree most.
 TestMesh make_clustered(uint32_t seed, uint32_t triangle_count);
 
+// The cases that break careless builders: zero-area triangles (repeated vertices, collinear
+// corners), coplanar overlapping triangles on one plane, exact duplicates, huge (1e3) and tiny (1e-5)
+// triangles among unit-sized ones, and a subset (about a tenth) whose boxes all share one exact
+// centre, so their centroids coincide bit for bit.
+TestMesh make_degenerate_soup(uint32_t seed, uint32_t triangle_count);
+
 struct RayOptions {
   float axis_aligned_fraction = 0.1f;   // direction along +-x, +-y or +-z exactly
   float zero_component_fraction = 0.1f; // one direction component exactly 0

@@ -1,0 +1,92 @@
+#include "accel/build_lbvh.h"
+
+#include "accel/bvh_collapse_leaves.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+
+namespace glint::accel {
+namespace detail {
+namespace {
+
+// Karras's delta(i, j): the length of the common prefix of keys i and j, where a key is the Morton
+// code followed by the 32-bit position (so equal codes still differ); -1 outside [0, count).
+struct CommonPrefix {
+  const std::vector<uint64_t>& codes;
+  int64_t count;
+
+  int operator()(int64_t i, int64_t j) const {
+    if (j < 0 || j >= count) return -1;
+    const uint64_t a = codes[static_cast<size_t>(i)], b = codes[static_cast<size_t>(j)];
+    if (a != b) return std::countl_zero(a ^ b);
+    return 64 + std::countl_zero(static_cast<uint32_t>(i ^ j));
+  }
+};
+
+// The paper's Figure 4 for interior node i: which end of its range it sits at (d), the other end
+// (j) by exponential then binary search, and the split (gamma) by binary search.
+void build_interior(BinaryTree& tree, const CommonPrefix& delta, int64_t i) {
+  const int d = delta(i, i + 1) > delta(i, i - 1) ? 1 : -1;
+  const int delta_min = delta(i, i - d);
+  int64_t length_max = 2;
+  while (delta(i, i + length_max * d) > delta_min) length_max *= 2;
+  int64_t length = 0;
+  for (int64_t step = length_max / 2; step >= 1; step /= 2)
+    if (delta(i, i + (length + step) * d) > delta_min) length += step;
+  const int64_t j = i + length * d;
+
+  const int delta_node = delta(i, j);
+  int64_t split = 0;
+  int64_t step = length;
+  do {
+    step = (step + 1) / 2;
+    if (delta(i, i + (split + step) * d) > delta_node) split += step;
+  } while (step > 1);
+  const int64_t gamma = i + split * d + std::min(d, 0);
+
+  const auto leaves = static_cast<int64_t>(tree.leaf_count);
+  const auto node = static_cast<uint32_t>(leaves + i);
+  const auto left = static_cast<uint32_t>(std::min(i, j) == gamma ? gamma : leaves + gamma);
+  const auto right = static_cast<uint32_t>(std::max(i, j) == gamma + 1 ? gamma + 1 : leaves + gamma + 1);
+  tree.nodes[node].left = left;
+  tree.nodes[node].right = right;
+  // Every node has exactly one parent, so these writes never race.
+  tree.nodes[left].parent = node;
+  tree.nodes[right].parent = node;
+}
+
+}  // namespace
+
+BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order) {
+  BinaryTree tree = make_leaves(input, order.prims);
+  const uint32_t count = tree.leaf_count;
+  if (count < 2) return tree;
+  tree.root = count;
+  const CommonPrefix delta{order.codes, count};
+  tbb::parallel_for(tbb::blocked_range<int64_t>(0, int64_t{count} - 1, 1024), [&](const tbb::blocked_range<int64_t>& r) {
+    for (int64_t i = r.begin(); i != r.end(); ++i) build_interior(tree, delta, i);
+  });
+  fit_interior_boxes(tree);
+  return tree;
+}
+
+BinaryTree build_lbvh_tree(const BuildInput& input) {
+  return build_karras_tree(input, sort_by_morton(input.centroids));
+}
+
+}  // namespace detail
+
+Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  detail::check_build_input(input, options, "lbvh");
+  detail::BinaryTree tree = detail::build_lbvh_tree(input);
+  Bvh bvh = detail::flatten_tree(tree, options, "lbvh");
+  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return bvh;
+}
+
+}  // namespace glint::accel

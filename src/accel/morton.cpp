@@ -1,0 +1,132 @@
+#include "accel/morton.h"
+
+#include "accel/radix_sort.h"
+#include "core/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace glint::accel {
+namespace {
+
+// Spreads the low 10 bits of v so that two zero bits follow each: b9..b0 -> b9 0 0 b8 0 0 ... b0.
+uint32_t spread_bits_10(uint32_t v) {
+  v &= 0x3ffu;
+  v = (v | (v << 16)) & 0x030000ffu;
+  v = (v | (v << 8)) & 0x0300f00fu;
+  v = (v | (v << 4)) & 0x030c30c3u;
+  v = (v | (v << 2)) & 0x09249249u;
+  return v;
+}
+
+// The same for the low 21 bits into a 64-bit word.
+uint64_t spread_bits_21(uint64_t v) {
+  v &= 0x1fffffull;
+  v = (v | (v << 32)) & 0x001f00000000ffffull;
+  v = (v | (v << 16)) & 0x001f0000ff0000ffull;
+  v = (v | (v << 8)) & 0x100f00f00f00f00full;
+  v = (v | (v << 4)) & 0x10c30c30c30c30c3ull;
+  v = (v | (v << 2)) & 0x1249249249249249ull;
+  return v;
+}
+
+uint32_t quantise(float unit, uint32_t cells) {
+  // Clamped in float before converting (converting an out-of-range float is undefined).
+  const float scaled = unit * static_cast<float>(cells);
+  if (!(scaled > 0.0f)) return 0;
+  return scaled < static_cast<float>(cells - 1) ? static_cast<uint32_t>(scaled) : cells - 1;
+}
+
+struct CentroidBounds {
+  Aabb box;
+  bool finite = true;
+};
+
+// Maps centroids into [0, 1]^3 of their bounds; a flat (or subnormal) axis maps to 0.
+struct UnitMapping {
+  vec3 origin;
+  vec3 scale;
+
+  vec3 operator()(const vec3& p) const { return (p - origin) * scale; }
+};
+
+UnitMapping unit_mapping(std::span<const vec3> centroids) {
+  const CentroidBounds bounds = tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(0, centroids.size(), 8192), CentroidBounds{},
+      [&](const tbb::blocked_range<size_t>& r, CentroidBounds acc) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          acc.finite = acc.finite && is_finite(centroids[i]);
+          acc.box.extend(centroids[i]);
+        }
+        return acc;
+      },
+      [](CentroidBounds a, const CentroidBounds& b) {
+        a.box.extend(b.box);
+        a.finite = a.finite && b.finite;
+        return a;
+      });
+  if (!bounds.finite) fail("accel: Morton codes: a primitive centroid is not finite");
+  UnitMapping mapping{bounds.box.min, vec3(0.0f)};
+  const vec3 extent = bounds.box.extent();
+  for (int axis = 0; axis < 3; ++axis)
+    if (extent[axis] > 0.0f && std::isfinite(1.0f / extent[axis])) mapping.scale[axis] = 1.0f / extent[axis];
+  return mapping;
+}
+
+template <typename Encode>
+MortonOrder sorted_codes(std::span<const vec3> centroids, const UnitMapping& mapping, uint32_t bits, Encode encode) {
+  MortonOrder order;
+  order.bits = bits;
+  order.codes.resize(centroids.size());
+  order.prims.resize(centroids.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, centroids.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) {
+      order.codes[i] = encode(mapping(centroids[i]));
+      order.prims[i] = static_cast<uint32_t>(i);
+    }
+  });
+  radix_sort_pairs(order.codes, order.prims, bits);
+  return order;
+}
+
+// Sorted neighbours with the same code but different centroids (see kMaxMorton30CollisionFraction).
+size_t count_collisions(const MortonOrder& order, std::span<const vec3> centroids) {
+  if (order.codes.size() < 2) return 0;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<size_t>(1, order.codes.size(), 8192), size_t{0},
+      [&](const tbb::blocked_range<size_t>& r, size_t acc) {
+        for (size_t i = r.begin(); i != r.end(); ++i)
+          if (order.codes[i] == order.codes[i - 1] && centroids[order.prims[i]] != centroids[order.prims[i - 1]])
+            ++acc;
+        return acc;
+      },
+      std::plus<>());
+}
+
+}  // namespace
+
+uint32_t morton30(const vec3& unit) {
+  return spread_bits_10(quantise(unit.x, 1u << 10)) | (spread_bits_10(quantise(unit.y, 1u << 10)) << 1) |
+         (spread_bits_10(quantise(unit.z, 1u << 10)) << 2);
+}
+
+uint64_t morton63(const vec3& unit) {
+  return spread_bits_21(quantise(unit.x, 1u << 21)) | (spread_bits_21(quantise(unit.y, 1u << 21)) << 1) |
+         (spread_bits_21(quantise(unit.z, 1u << 21)) << 2);
+}
+
+MortonOrder sort_by_morton(std::span<const vec3> centroids) {
+  const UnitMapping mapping = unit_mapping(centroids);
+  MortonOrder order = sorted_codes(centroids, mapping, 30, [](const vec3& p) { return uint64_t{morton30(p)}; });
+  const size_t collisions = count_collisions(order, centroids);
+  if (static_cast<double>(collisions) <= kMaxMorton30CollisionFraction * static_cast<double>(centroids.size()))
+    return order;
+  return sorted_codes(centroids, mapping, 63, [](const vec3& p) { return morton63(p); });
+}
+
+}  // namespace glint::accel

@@ -1,0 +1,38 @@
+#pragma once
+// Morton (Z-order) codes of primitive centroids, the spatial order the bottom-up builders (lbvh,
+// trbvh, ploc) start from: quantise each centroid in the centroid bounds, interleave the bits of
+// x, y and z (x in the lowest of every three bits), sort the codes.
+#include "accel/build_options.h"
+#include "core/math.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace glint::accel {
+
+// 10 bits per axis: a 30-bit code. `unit` is a point in [0, 1]^3 (clamped: outside values take the
+// nearest cell), each axis quantised to floor(c * 1024) capped at 1023.
+uint32_t morton30(const vec3& unit);
+// 21 bits per axis: a 63-bit code, quantised the same way to 2^21 cells per axis.
+uint64_t morton63(const vec3& unit);
+
+// Centroids sorted along the Z curve. codes[i] is the code of primitive prims[i]; equal codes keep
+// the primitives in index order (the radix sort is stable), so the result is deterministic.
+struct MortonOrder {
+  std::vector<uint64_t> codes;
+  std::vector<uint32_t> prims;
+  uint32_t bits = 0;  // 30 or 63
+};
+
+// When 30-bit codes are enough: at most this fraction of sorted neighbours may share a code while
+// their centroids differ. Beyond it (fine detail in a large scene: 1024 cells per axis are too coarse)
+// the order inside those cells would be arbitrary, so the codes are recomputed with 63 bits. Pairs
+// whose centroids are identical do not count: no code length can separate them.
+inline constexpr double kMaxMorton30CollisionFraction = 0.01;
+
+// Computes, checks and sorts the codes of `centroids` (in their bounding box; a flat axis maps to 0),
+// in parallel. glint::Error when a centroid is not finite.
+MortonOrder sort_by_morton(std::span<const vec3> centroids);
+
+}  // namespace glint::accel

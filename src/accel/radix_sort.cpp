@@ -1,0 +1,82 @@
+#include "accel/radix_sort.h"
+
+#include "core/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <utility>
+
+namespace glint::accel {
+namespace {
+
+constexpr uint32_t kDigitBits = 8;
+constexpr uint32_t kDigits = 1u << kDigitBits;
+// Large enough that a chunk's histogram (1 KiB) and its scheduling are negligible next to its
+// scatter, small enough that 600k keys still give every core several chunks.
+constexpr size_t kChunkSize = 16384;
+
+using Histogram = std::array<uint32_t, kDigits>;
+
+uint32_t digit_of(uint64_t key, uint32_t shift) { return static_cast<uint32_t>(key >> shift) & (kDigits - 1); }
+
+}  // namespace
+
+void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values, uint32_t key_bits) {
+  if (keys.size() != values.size())
+    fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
+  if (key_bits < 1 || key_bits > 64) fail("accel: radix_sort_pairs: key_bits must be in [1, 64], got {}", key_bits);
+  if (keys.size() >= (size_t{1} << 32)) fail("accel: radix_sort_pairs: {} pairs, at most 2^32 - 1", keys.size());
+  const size_t count = keys.size();
+  if (count < 2) return;
+
+  const size_t chunk_count = (count + kChunkSize - 1) / kChunkSize;
+  std::vector<Histogram> offsets(chunk_count);  // counts, then (after the prefix sum) output offsets
+  std::vector<uint64_t> key_buffer(count);
+  std::vector<uint32_t> value_buffer(count);
+  const auto chunk_range = [&](size_t chunk) {
+    return std::pair{chunk * kChunkSize, std::min(count, (chunk + 1) * kChunkSize)};
+  };
+
+  for (uint32_t shift = 0; shift < key_bits; shift += kDigitBits) {
+    tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
+      Histogram& histogram = offsets[chunk];
+      histogram.fill(0);
+      const auto [begin, end] = chunk_range(chunk);
+      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys[i], shift)];
+    });
+
+    // Exclusive prefix sum in (digit, chunk) order: all keys with a smaller digit come first, then
+    // those of the same digit from earlier chunks, which is what makes the pass stable.
+    uint32_t running = 0;
+    bool single_digit = false;
+    for (uint32_t digit = 0; digit < kDigits; ++digit) {
+      uint32_t digit_total = 0;
+      for (size_t chunk = 0; chunk < chunk_count; ++chunk) {
+        const uint32_t chunk_count_of_digit = offsets[chunk][digit];
+        offsets[chunk][digit] = running;
+        running += chunk_count_of_digit;
+        digit_total += chunk_count_of_digit;
+      }
+      if (digit_total == count) single_digit = true;
+    }
+    if (single_digit) continue;  // every key has this digit: the pass would not move anything
+
+    tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
+      Histogram& next = offsets[chunk];
+      const auto [begin, end] = chunk_range(chunk);
+      for (size_t i = begin; i != end; ++i) {
+        const uint32_t slot = next[digit_of(keys[i], shift)]++;
+        key_buffer[slot] = keys[i];
+        value_buffer[slot] = values[i];
+      }
+    });
+    keys.swap(key_buffer);
+    values.swap(value_buffer);
+  }
+}
+
+}  // namespace glint::accel

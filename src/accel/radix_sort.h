@@ -1,0 +1,18 @@
+#pragma once
+// Parallel LSD radix sort of (key, value) pairs, the sorting step of the Morton-code builders
+// (lbvh, trbvh, ploc). Own implementation on oneTBB: per pass, every fixed-size chunk counts its
+// 8-bit digits, one prefix sum over (digit, chunk) gives every chunk its output offsets, and the
+// chunks scatter in parallel. Chunks keep their input order, so the sort is stable and its output
+// does not depend on the number of threads.
+#include <cstdint>
+#include <vector>
+
+namespace glint::accel {
+
+// Sorts keys ascending, moving values along; equal keys keep their relative order. Only the low
+// `key_bits` bits of every key take part (the others must be zero); key_bits in [1, 64], glint::Error
+// otherwise or when the vectors differ in size. Passes in which every key has the same digit are
+// skipped, so sorting 30-bit codes costs 4 passes and already sorted digits cost no scatter.
+void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values, uint32_t key_bits);
+
+}  // namespace glint::accel

@@ -1,0 +1,73 @@
+#include "accel/radix_sort.h"
+#include "core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace glint::accel {
+namespace {
+
+// Random keys of key_bits bits drawn from a pool of `distinct` values, so duplicates are common.
+std::vector<uint64_t> random_keys(uint32_t seed, size_t count, uint32_t key_bits, size_t distinct) {
+  std::mt19937_64 rng(seed);
+  const uint64_t mask = key_bits == 64 ? ~uint64_t{0} : (uint64_t{1} << key_bits) - 1;
+  std::vector<uint64_t> pool(distinct);
+  for (uint64_t& key : pool) key = rng() & mask;
+  std::vector<uint64_t> keys(count);
+  for (uint64_t& key : keys) key = pool[rng() % distinct];
+  return keys;
+}
+
+TEST(RadixSort, MatchesStdSortAndIsStable) {
+  for (const uint32_t key_bits : {8u, 30u, 63u, 64u}) {
+    for (const size_t count : {size_t{0}, size_t{1}, size_t{2}, size_t{1000}, size_t{100003}}) {
+      for (const size_t distinct : {size_t{1}, size_t{7}, size_t{50000}}) {
+        std::vector<uint64_t> keys = random_keys(key_bits * 1000 + static_cast<uint32_t>(count), count, key_bits, distinct);
+        std::vector<uint32_t> values(count);
+        std::iota(values.begin(), values.end(), 0u);
+        std::vector<std::pair<uint64_t, uint32_t>> expected(count);
+        for (size_t i = 0; i < count; ++i) expected[i] = {keys[i], values[i]};
+        // Values start as the positions, so a stable sort is the sort by (key, value).
+        std::sort(expected.begin(), expected.end());
+
+        radix_sort_pairs(keys, values, key_bits);
+        ASSERT_EQ(keys.size(), count);
+        for (size_t i = 0; i < count; ++i) {
+          ASSERT_EQ(keys[i], expected[i].first) << "bits " << key_bits << " count " << count << " at " << i;
+          ASSERT_EQ(values[i], expected[i].second) << "bits " << key_bits << " count " << count << " at " << i;
+        }
+      }
+    }
+  }
+}
+
+TEST(RadixSort, SortedAndReversedInputs) {
+  std::vector<uint64_t> keys(70000);
+  std::iota(keys.begin(), keys.end(), uint64_t{1} << 40);
+  std::reverse(keys.begin(), keys.end());
+  std::vector<uint32_t> values(keys.size());
+  std::iota(values.begin(), values.end(), 0u);
+  radix_sort_pairs(keys, values, 41);
+  EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end()));
+  for (size_t i = 0; i < values.size(); ++i) ASSERT_EQ(values[i], values.size() - 1 - i);
+  radix_sort_pairs(keys, values, 41);  // already sorted: nothing moves
+  EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end()));
+  EXPECT_EQ(values.front(), values.size() - 1);
+}
+
+TEST(RadixSort, BadArgumentsAreClearErrors) {
+  std::vector<uint64_t> keys(3, 1);
+  std::vector<uint32_t> values(2, 0);
+  EXPECT_THROW(radix_sort_pairs(keys, values, 30), Error);
+  values.resize(3);
+  EXPECT_THROW(radix_sort_pairs(keys, values, 0), Error);
+  EXPECT_THROW(radix_sort_pairs(keys, values, 65), Error);
+}
+
+}  // namespace
+}  // namespace glint::accel
