@@ -71,6 +71,11 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_flag("--debug-views", options.debug_views,
                     "Also write albedo, normals, positions, depth, shadow mask, SSR reflection and failure mask per frame");
   command->add_flag("--video", options.video, "Also encode DIR/walkthrough.mp4 with ffmpeg (must be on PATH)");
+  command->add_flag("--timings-only", options.timings_only,
+                    "Write no images, only timings.csv and run.json: frames follow each other without the "
+                    "PNG encoding in between, so the GPU stays busy (for measurements)")
+      ->excludes("--video")
+      ->excludes("--debug-views");
   command->add_option("--deform", options.deform, "Animate the deformable meshes: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
@@ -130,9 +135,11 @@ int run_render_command(const RenderOptions& options) {
     glFinish();  // the CPU frame time includes the GPU finishing the frame
     const double cpu_frame_ms = milliseconds_since(frame_start);
 
-    const ImageRgba8 image = pipeline.read_final();
-    write_png(out.frame_path(frame), image);
-    if (video) video->add_frame(image);
+    if (!options.timings_only) {
+      const ImageRgba8 image = pipeline.read_final();
+      write_png(out.frame_path(frame), image);
+      if (video) video->add_frame(image);
+    }
     if (options.debug_views)
       for (const render::DebugView& view : pipeline.read_debug_views()) write_png(out.debug_view_path(frame, view.name), view.image);
 

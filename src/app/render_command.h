@@ -17,6 +17,7 @@ struct RenderOptions {
   std::string out = "render-out";
   bool debug_views = false;
   bool video = false;
+  bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)
   std::string deform = "on";      // on|off: animate the deformable meshes
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
   int blur_radius = 2;

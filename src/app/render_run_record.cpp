@@ -36,6 +36,7 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"deform", options.deform},
           {"debug_views", options.debug_views},
           {"video", options.video},
+          {"timings_only", options.timings_only},
           {"blur_radius", options.blur_radius},
           {"exposure", options.exposure},
           {"tone_map", options.tone_map},

@@ -84,11 +84,15 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary left behind: " << entry.path();
 }
 
-TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmpty) {
+TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoImages) {
   TempFolder folder;
   const fs::path out = folder.path() / "off";
-  const CliResult r = run_glint("render atrium-simple --reflections off --width 32 --height 18 --frames 0 --out " + quoted(out));
+  const CliResult r = run_glint("render atrium-simple --reflections off --timings-only --width 32 --height 18 --frames 0 --out " +
+                                quoted(out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().extension(), ".png") << entry.path();
+  EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
   ASSERT_EQ(csv[1].size(), 12u);
