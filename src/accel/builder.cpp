@@ -3,6 +3,7 @@
 #include "accel/build_median.h"
 #include "accel/build_none.h"
 #include "accel/build_sah.h"
+#include "accel/build_sbvh.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
 
@@ -15,6 +16,7 @@ std::string_view builder_name(BvhBuilder builder) {
     case BvhBuilder::none: return "none";
     case BvhBuilder::median: return "median";
     case BvhBuilder::sah: return "sah";
+    case BvhBuilder::sbvh: return "sbvh";
   }
   return "unknown";
 }
@@ -22,7 +24,7 @@ std::string_view builder_name(BvhBuilder builder) {
 BvhBuilder parse_bvh_builder(std::string_view name) {
   for (BvhBuilder builder : kAllBvhBuilders)
     if (builder_name(builder) == name) return builder;
-  fail("accel: unknown BVH builder '{}' (known: none, median, sah)", name);
+  fail("accel: unknown BVH builder '{}' (known: none, median, sah, sbvh)", name);
 }
 
 Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
@@ -30,11 +32,13 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
     case BvhBuilder::none: return build_none(input, options);
     case BvhBuilder::median: return build_median(input, options);
     case BvhBuilder::sah: return build_sah(input, options);
+    case BvhBuilder::sbvh: return build_sbvh(input, options);
   }
   fail("accel: invalid BvhBuilder value {}", static_cast<int>(builder));
 }
 
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options) {
+  if (builder == BvhBuilder::sbvh) return build_sbvh(mesh, options);
   const auto start = std::chrono::steady_clock::now();
   const PrimitiveBounds bounds = triangle_bounds(mesh);
   Bvh bvh = build_bvh(builder, bounds.input(), options);
