@@ -312,6 +312,12 @@ struct Builder {
     return duplicates <= budget && !left.empty() && !right.empty();
   }
 
+  static float partition_cost(const References& refs) {
+    Aabb box;
+    for (const Reference& ref : refs) box.extend(ref.box);
+    return half_area(box) * static_cast<float>(refs.size());
+  }
+
   void object_partition(const References& refs, const SplitChoice& split, References& left, References& right) const {
     for (const Reference& ref : refs)
       (split.mapping.bin(ref.box.center()[split.axis]) < split.boundary ? left : right).push_back(ref);
@@ -342,19 +348,25 @@ struct Builder {
     if (budget > 0 && overlap > sbvh.alpha * root_area) spatial = spatial_split(refs, box, parallel);
 
     const bool use_spatial = spatial.valid() && spatial.cost < object.cost;
-    const float best = use_spatial ? spatial.cost : object.cost;
     const float area = half_area(box);
-    const float split_cost = options.traversal_cost + (area > 0.0f ? options.intersection_cost * best / area
-                                                                   : options.intersection_cost * static_cast<float>(count));
     const float leaf_cost = options.intersection_cost * static_cast<float>(count);
+    const auto cost_of_split = [&](float sah) {
+      return options.traversal_cost + (area > 0.0f ? options.intersection_cost * sah / area : leaf_cost);
+    };
     const bool fits_leaf = count <= options.max_leaf_size;
-    if (fits_leaf && (!std::isfinite(best) || leaf_cost <= split_cost)) return make_leaf(node, refs);
+    const float estimate = use_spatial ? spatial.cost : object.cost;
+    if (fits_leaf && (!std::isfinite(estimate) || leaf_cost <= cost_of_split(estimate))) return make_leaf(node, refs);
 
     References left, right;
     uint64_t spent = 0;
     bool done = false;
+    float actual = object.cost;  // exact for an object split: the bins' boxes are the children's
     if (use_spatial) {
       done = apply_spatial(refs, spatial, budget, left, right);
+      // The binned estimate assumed every straddler split; unsplitting and clipping change the
+      // real children, so keep the spatial split only if it really beats the object split.
+      if (done) actual = partition_cost(left) + partition_cost(right);
+      if (done && object.valid()) done = actual < object.cost;
       if (done) spent = left.size() + right.size() - count;
     }
     if (!done && object.valid()) {
@@ -362,7 +374,10 @@ struct Builder {
       right.clear();
       object_partition(refs, object, left, right);
       done = !left.empty() && !right.empty();
+      actual = object.cost;
     }
+    // The split actually made may cost more than the estimate that ruled out a leaf.
+    if (fits_leaf && (!done || leaf_cost <= cost_of_split(actual))) return make_leaf(node, refs);
     const auto fits_depth = [&](size_t child) {
       return level + 1 + median_levels(child, options.max_leaf_size) <= kMaxBvhDepth;
     };
