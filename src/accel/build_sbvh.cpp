@@ -28,16 +28,15 @@ using References = std::vector<Reference>;
 
 Aabb intersect(const Aabb& a, const Aabb& b) { return Aabb{glm::max(a.min, b.min), glm::min(a.max, b.max)}; }
 
-// Smallest float box around a point computed in double: rounding outward keeps clipped boxes
-// conservative, so a ray that hits the triangle always enters the box of the part it hits.
+// A float box around a point computed in double, grown by about two ulps (at least the smallest
+// normal float) so it contains the exact point whatever the rounding: clipped boxes stay
+// conservative, and a ray that hits the triangle always enters the box of the part it hits.
+// (Cheaper than rounding each coordinate outward with nextafter, which dominated the build.)
 void extend_outward(Aabb& box, const glm::dvec3& p) {
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto value = static_cast<float>(p[axis]);
-    const float low = static_cast<double>(value) > p[axis] ? std::nextafter(value, -kInfinity) : value;
-    const float high = static_cast<double>(value) < p[axis] ? std::nextafter(value, kInfinity) : value;
-    box.min[axis] = std::min(box.min[axis], low);
-    box.max[axis] = std::max(box.max[axis], high);
-  }
+  const vec3 value(p);
+  const vec3 slack = glm::abs(value) * 0x1p-22f + vec3(std::numeric_limits<float>::min());
+  box.min = glm::min(box.min, value - slack);
+  box.max = glm::max(box.max, value + slack);
 }
 
 // Splits `ref` at the plane x[axis] = position into the boxes of its parts on each side (either may
