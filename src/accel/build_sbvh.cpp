@@ -137,7 +137,8 @@ struct SplitChoice {
   bool valid() const { return axis >= 0; }
 };
 
-// Sweeps the bins of every axis; left_counts/right_counts pick what is counted on each side.
+// Sweeps the bins of every axis. Object bins count each reference once; spatial bins count a
+// reference on the left where it starts and on the right where it ends (straddlers on both sides).
 template <bool kSpatial>
 void sweep(const std::vector<Bin>& bins, const BinMapping (&mappings)[3], SplitChoice& best) {
   for (int axis = 0; axis < 3; ++axis) {

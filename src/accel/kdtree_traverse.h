@@ -1,7 +1,8 @@
 #pragma once
 // Single-ray kd-tree traversal, host and device: the classic front-to-back descent (pbrt, Havran's
 // thesis) with a fixed stack of far cells and their [t_near, t_far]. Because cells do not overlap,
-// closest hit stops at the first leaf whose hit lies within the leaf's own t range.
+// closest hit stops at the first leaf whose hit lies within the leaf's own t range, i.e. before
+// the entry of the next cell on the stack.
 //
 // Robustness: every decision that could skip a cell (plane beyond t_far, before t_near, a popped
 // cell beyond the best hit) is made with the slab test's rounding slack (kSlabFarScale), so a
@@ -86,8 +87,11 @@ GLINT_HOST_DEVICE bool traverse_kdtree(const KdTreeView& tree, const vec3& origi
         if constexpr (kAnyHit) return true;
       }
     }
-    // A hit inside this cell cannot be beaten by a cell further along the ray.
-    if (hit && t_max <= t_far) return true;
+    // Early termination: a far cell is entered no earlier than its stack entry says, so once the
+    // best hit lies before that entry the cell is dropped unvisited; when the hit lies inside the
+    // current cell, every cell along the ray is dropped this way. Each entry is checked, not only
+    // the top one: the twin of a cell whose split plane contains the ray shares that cell's t range
+    // and sits below entries with later starts.
     for (;;) {
       if (stack_size == 0) return hit;
       --stack_size;
