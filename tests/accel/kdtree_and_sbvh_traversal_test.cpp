@@ -217,6 +217,31 @@ TEST_P(ReferenceStructures, GridEdgesAndVerticesAreWatertight) { check(grid_refe
 TEST_P(ReferenceStructures, AxisParallelRays) { check(axis_reference()); }
 TEST_P(ReferenceStructures, DegenerateSoup) { check(degenerate_reference()); }
 
+TEST(KdTreeTraversal, RayInASplitPlaneChecksTheTwinCellBeforeStopping) {
+  // A hand-made tree: the root splits y at 0; the above leaf holds a square at z = 2, the below
+  // leaf one at z = 1. A ray along +z inside the plane y = 0 visits the above leaf first (its hit
+  // lies inside that leaf's t range) but must still visit the below leaf, which shares the same t
+  // range and holds the closer hit.
+  TestMesh scene;
+  for (float z : {2.0f, 1.0f}) {
+    scene.add_triangle(vec3(-1, -1, z), vec3(1, -1, z), vec3(1, 1, z));
+    scene.add_triangle(vec3(-1, -1, z), vec3(1, 1, z), vec3(-1, 1, z));
+  }
+  const TriangleMesh mesh = scene.view();
+  KdTree tree;
+  tree.prim_count = 4;
+  tree.bounds = scene.bounds();
+  tree.depth = 2;
+  tree.nodes = {KdNode::interior(1, 0.0f, 2), KdNode::leaf(0, 2), KdNode::leaf(2, 2)};
+  tree.prim_indices = {2, 3, 0, 1};  // below: the z = 1 square; above: the z = 2 square
+  const Ray ray{vec3(0.1f, 0.0f, 0.0f), 0.0f, vec3(0.0f, 0.0f, 1.0f), kInfinity};
+  Hit hit;
+  trace_closest(tree, mesh, std::span(&ray, 1), std::span(&hit, 1));
+  ASSERT_TRUE(hit.valid());
+  EXPECT_EQ(hit.t, 1.0f);
+  EXPECT_GE(hit.prim, 2u);
+}
+
 TEST(ReferenceStructuresRays, MoreThan100kPerStructure) {
   const size_t total = soup_reference().rays.size() + grid_reference().rays.size() + axis_reference().rays.size() +
                        degenerate_reference().rays.size();
