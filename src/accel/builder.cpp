@@ -5,6 +5,7 @@
 #include "accel/build_none.h"
 #include "accel/build_ploc.h"
 #include "accel/build_sah.h"
+#include "accel/build_sbvh.h"
 #include "accel/build_trbvh.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
@@ -19,6 +20,7 @@ std::string_view builder_name(BvhBuilder builder) {
     case BvhBuilder::none: return "none";
     case BvhBuilder::median: return "median";
     case BvhBuilder::sah: return "sah";
+    case BvhBuilder::sbvh: return "sbvh";
     case BvhBuilder::lbvh: return "lbvh";
     case BvhBuilder::trbvh: return "trbvh";
     case BvhBuilder::ploc: return "ploc";
@@ -42,6 +44,7 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
     case BvhBuilder::none: return build_none(input, options);
     case BvhBuilder::median: return build_median(input, options);
     case BvhBuilder::sah: return build_sah(input, options);
+    case BvhBuilder::sbvh: return build_sbvh(input, options);
     case BvhBuilder::lbvh: return build_lbvh(input, options);
     case BvhBuilder::trbvh: return build_trbvh(input, options);
     case BvhBuilder::ploc: return build_ploc(input, options);
@@ -50,6 +53,7 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
 }
 
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options) {
+  if (builder == BvhBuilder::sbvh) return build_sbvh(mesh, options);
   const auto start = std::chrono::steady_clock::now();
   const PrimitiveBounds bounds = triangle_bounds(mesh);
   Bvh bvh = build_bvh(builder, bounds.input(), options);

@@ -9,17 +9,20 @@
 
 namespace glint::accel {
 
-enum class BvhBuilder { none, median, sah, lbvh, trbvh, ploc };
+enum class BvhBuilder { none, median, sah, sbvh, lbvh, trbvh, ploc };
 
-inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none,  BvhBuilder::median, BvhBuilder::sah,
-                                                 BvhBuilder::lbvh,  BvhBuilder::trbvh,  BvhBuilder::ploc};
+inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none, BvhBuilder::median, BvhBuilder::sah,
+                                                 BvhBuilder::sbvh, BvhBuilder::lbvh,   BvhBuilder::trbvh,
+                                                 BvhBuilder::ploc};
 
 std::string_view builder_name(BvhBuilder builder);
 // Inverse of builder_name; glint::Error listing the known names otherwise.
 BvhBuilder parse_bvh_builder(std::string_view name);
 
+// sbvh from boxes alone clips references as boxes (no triangle geometry to clip).
 Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options = {});
-// Convenience for a BLAS: bounds the triangles first (that time is included in build_ms).
+// Convenience for a BLAS: bounds the triangles first (that time is included in build_ms); sbvh
+// clips the triangles themselves.
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options = {});
 
 }  // namespace glint::accel

@@ -11,7 +11,10 @@ namespace glint::accel {
 // Throws glint::Error naming the first broken invariant:
 //  - node count: 0 for no primitives, else reachable nodes == nodes.size() and
 //    interior nodes == leaves - 1; every child index after its parent and in range
-//  - every primitive referenced by exactly one leaf slot, every slot by exactly one leaf
+//  - every primitive referenced by exactly one leaf slot, every slot by exactly one leaf; for a
+//    structure that is not refittable (spatial splits: leaves hold clipped references) every
+//    primitive at least once and its box only overlapping, not inside, the leaf's box; such
+//    builders add their own check of the references (validate_sbvh_references)
 //  - leaf sizes in [1, max_leaf_size]
 //  - child boxes inside their parent's box, primitive boxes inside their leaf's box
 //  - depth <= kMaxBvhDepth and equal to bvh.depth

@@ -1,6 +1,7 @@
 #include "accel/tlas.h"
 
 #include "accel/refit.h"
+#include "accel/trace.h"
 #include "core/error.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -21,10 +22,8 @@ bool finite_matrix(const mat4& m) {
 }  // namespace
 
 Blas make_blas(const Bvh& bvh, const TriangleMesh& mesh) {
-  if (bvh.prim_indices.size() != mesh.triangle_count)
-    fail("accel: BLAS built over {} primitives paired with a mesh of {} triangles", bvh.prim_indices.size(),
-         mesh.triangle_count);
-  if (bvh.depth > kMaxBvhDepth) fail("accel: BLAS depth {} exceeds the traversal limit {}", bvh.depth, kMaxBvhDepth);
+  // The same checks as a single-level batch (references of spatial-split BVHs included).
+  check_traceable(bvh, mesh.triangle_count, "triangles of a BLAS mesh");
   return {bvh.view(), mesh};
 }
 

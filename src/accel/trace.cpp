@@ -6,14 +6,24 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
 namespace glint::accel {
 
 // Rays in a batch cost very different amounts; small grains let TBB balance them.
 constexpr size_t kRayGrain = 64;
 
 void check_traceable(const Bvh& bvh, size_t prim_count, const char* what) {
-  if (bvh.prim_indices.size() != prim_count)
+  if (!bvh.refittable) {
+    // Leaves hold references (spatial splits): more slots than primitives, each one in range.
+    uint32_t largest = 0;
+    for (uint32_t prim : bvh.prim_indices) largest = std::max(largest, prim);
+    if (bvh.prim_indices.size() < prim_count || (!bvh.prim_indices.empty() && largest >= prim_count))
+      fail("accel: BVH with {} references up to primitive {} traced against {} {}", bvh.prim_indices.size(),
+           largest, prim_count, what);
+  } else if (bvh.prim_indices.size() != prim_count) {
     fail("accel: BVH built over {} primitives traced against {} {}", bvh.prim_indices.size(), prim_count, what);
+  }
   if (bvh.depth > kMaxBvhDepth) fail("accel: BVH depth {} exceeds the traversal limit {}", bvh.depth, kMaxBvhDepth);
 }
 
