@@ -5,7 +5,11 @@
 //   random      origins uniform in the scene box, uniform directions (incoherent)
 //   primary     a 1280x720 camera at a walkthrough frame (coherent)
 //   reflection  mirror rays from the primary hits (the rays glint's hybrid mode traces)
-// Counter Mrays/s: closest-hit rays per second of wall time, TBB on every core.
+// Counters: Mrays/s, closest-hit rays per second of wall time (TBB on every core); Mrays/cpu-s,
+// per second of CPU time of all the process's threads (steadier when other work shares the
+// machine); hit% and differ% (hits whose validity or t differs from the binary BVH's by more than
+// 1e-4 relative). GLINT_BENCH_LEAF (binary max_leaf_size) and GLINT_BENCH_MERGE (the collapse's
+// merge_leaf_size) override the defaults for experiments.
 //
 //   ./build/benchmarks/glint_benchmarks --benchmark_counters_tabular=true
 #include "accel/builder.h"
@@ -26,6 +30,8 @@
 #endif
 
 #include <cmath>
+#include <ctime>
+#include <cstdlib>
 #include <cstdio>
 #include <optional>
 #include <random>
@@ -118,9 +124,13 @@ struct Fixture {
       for (uint32_t index : m.indices) soup.push_back(vec3(instance.transform * vec4(m.positions[index], 1.0f)));
     }
     mesh = make_triangle_soup(soup);
-    bvh = build_bvh(BvhBuilder::sah, mesh);
-    wide4 = collapse_to_wide<4>(bvh, mesh);
-    wide8 = collapse_to_wide<8>(bvh, mesh);
+    BuildOptions build_options;
+    if (const char* leaf = std::getenv("GLINT_BENCH_LEAF")) build_options.max_leaf_size = static_cast<uint32_t>(std::atoi(leaf));
+    WideCollapseOptions collapse;
+    if (const char* merge = std::getenv("GLINT_BENCH_MERGE")) collapse.merge_leaf_size = static_cast<uint32_t>(std::atoi(merge));
+    bvh = build_bvh(BvhBuilder::sah, mesh, build_options);
+    wide4 = collapse_to_wide<4>(bvh, mesh, collapse);
+    wide8 = collapse_to_wide<8>(bvh, mesh, collapse);
     std::fprintf(stderr, "atrium: %u triangles; %s\n", mesh.triangle_count,
                  format_stats("sah", compute_stats(bvh)).c_str());
     std::fprintf(stderr, "wide4: %zu nodes, %u leaves, depth %u, collapse %.1f ms; wide8: %zu nodes, %u leaves, "
@@ -212,6 +222,12 @@ void trace(Structure structure, std::span<const Ray> rays, std::span<Hit> hits) 
   }
 }
 
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
 void closest_hit(benchmark::State& state, RaySet set, Structure structure) {
   if (structure == Structure::wide8_avx2 && !cpu_has_avx2()) {
     state.SkipWithError("no AVX2 on this CPU");
@@ -221,11 +237,13 @@ void closest_hit(benchmark::State& state, RaySet set, Structure structure) {
   if (structure == Structure::wide8_avx2) force_wide_simd_path(WideSimdPath::avx2);
   const std::vector<Ray>& rays = ray_set(set);
   std::vector<Hit> hits(rays.size());
+  const double cpu_start = process_cpu_seconds();
   for (auto _ : state) {
     trace(structure, rays, hits);
     benchmark::DoNotOptimize(hits.data());
     benchmark::ClobberMemory();
   }
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
   force_wide_simd_path(std::nullopt);
   // Hits agree with the binary BVH's (glint structures: the same triangle test, so the same t).
   std::vector<Hit> reference(rays.size());
@@ -239,6 +257,10 @@ void closest_hit(benchmark::State& state, RaySet set, Structure structure) {
   }
   state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6,
                                                  benchmark::Counter::kIsRate);
+  // Per CPU-second of all the process's threads: what a core delivers, far less disturbed than
+  // wall time when other processes share the machine.
+  state.counters["Mrays/cpu-s"] =
+      static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6 / cpu_seconds;
   state.counters["hit%"] = 100.0 * static_cast<double>(hit_count) / static_cast<double>(rays.size());
   state.counters["differ%"] = 100.0 * static_cast<double>(disagree) / static_cast<double>(rays.size());
 }
