@@ -33,7 +33,9 @@ struct SimdRay {
   F origin[3];
   F inv_direction[3];
   F t_min;
-  int near_side[3];  // 0: the near plane of each box is its min (direction >= +0), 1: its max
+  // Float offsets into WideNode::bounds of each axis' near and far planes: the near plane is the
+  // min for a direction component >= +0 and the max otherwise (same choice as intersect_box).
+  int near_offset[3], far_offset[3];
   // Watertight test: origin along the permuted axes and the shear constants.
   int kx, ky, kz;
   F origin_kx, origin_ky, origin_kz;
@@ -47,7 +49,9 @@ GLINT_WIDE_KERNEL_ATTR inline SimdRay<S> make_simd_ray(const Ray& ray) {
   for (int axis = 0; axis < 3; ++axis) {
     r.origin[axis] = S::set1(ray.origin[axis]);
     r.inv_direction[axis] = S::set1(box_ray.inv_direction[axis]);
-    r.near_side[axis] = box_ray.inv_direction[axis] < 0.0f ? 1 : 0;  // same choice as intersect_box
+    const int near_side = box_ray.inv_direction[axis] < 0.0f ? 1 : 0;
+    r.near_offset[axis] = (2 * axis + near_side) * S::kWidth;
+    r.far_offset[axis] = (2 * axis + 1 - near_side) * S::kWidth;
   }
   r.t_min = S::set1(ray.t_min);
   const WatertightRay woop = make_watertight_ray(ray.origin, ray.direction);
@@ -72,9 +76,10 @@ GLINT_WIDE_KERNEL_ATTR inline unsigned intersect_children(const WideNode<N>& nod
   using F = typename S::F;
   F t_near = r.t_min;
   F t_far = S::set1(kInfinity);
+  const float* planes = &node.bounds[0][0][0];
   for (int axis = 0; axis < 3; ++axis) {
-    const F near_plane = S::load(node.bounds[axis][r.near_side[axis]]);
-    const F far_plane = S::load(node.bounds[axis][1 - r.near_side[axis]]);
+    const F near_plane = S::load(planes + r.near_offset[axis]);
+    const F far_plane = S::load(planes + r.far_offset[axis]);
     // max/min keep their second operand on NaN (0 * infinity on a plane): that axis is ignored.
     t_near = S::max(S::mul(S::sub(near_plane, r.origin[axis]), r.inv_direction[axis]), t_near);
     t_far = S::min(S::mul(S::sub(far_plane, r.origin[axis]), r.inv_direction[axis]), t_far);
