@@ -29,12 +29,14 @@
 #include <embree3/rtcore.h>
 #endif
 
+#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <cstdlib>
 #include <cstdio>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace glint::accel {
@@ -125,18 +127,22 @@ struct Fixture {
     }
     mesh = make_triangle_soup(soup);
     BuildOptions build_options;
-    if (const char* leaf = std::getenv("GLINT_BENCH_LEAF")) build_options.max_leaf_size = static_cast<uint32_t>(std::atoi(leaf));
+    if (const char* leaf = std::getenv("GLINT_BENCH_LEAF"))
+      build_options.max_leaf_size = static_cast<uint32_t>(std::atoi(leaf));
     WideCollapseOptions collapse;
-    if (const char* merge = std::getenv("GLINT_BENCH_MERGE")) collapse.merge_leaf_size = static_cast<uint32_t>(std::atoi(merge));
+    if (const char* merge = std::getenv("GLINT_BENCH_MERGE"))
+      collapse.merge_leaf_size = static_cast<uint32_t>(std::atoi(merge));
     bvh = build_bvh(BvhBuilder::sah, mesh, build_options);
     wide4 = collapse_to_wide<4>(bvh, mesh, collapse);
     wide8 = collapse_to_wide<8>(bvh, mesh, collapse);
     std::fprintf(stderr, "atrium: %u triangles; %s\n", mesh.triangle_count,
                  format_stats("sah", compute_stats(bvh)).c_str());
-    std::fprintf(stderr, "wide4: %zu nodes, %u leaves, depth %u, collapse %.1f ms; wide8: %zu nodes, %u leaves, "
-                         "depth %u, collapse %.1f ms; 8-wide path %s\n",
-                 wide4.nodes.size(), wide4.leaf_count, wide4.depth, wide4.collapse_ms, wide8.nodes.size(),
-                 wide8.leaf_count, wide8.depth, wide8.collapse_ms, std::string(simd_path_name(wide_simd_path())).c_str());
+    std::fprintf(stderr,
+                 "wide4: %zu nodes, %u leaves, %zu blocks, depth %u, collapse %.1f ms; "
+                 "wide8: %zu nodes, %u leaves, %zu blocks, depth %u, collapse %.1f ms; 8-wide path %s\n",
+                 wide4.nodes.size(), wide4.leaf_count, wide4.blocks.size(), wide4.depth, wide4.collapse_ms,
+                 wide8.nodes.size(), wide8.leaf_count, wide8.blocks.size(), wide8.depth, wide8.collapse_ms,
+                 std::string(simd_path_name(wide_simd_path())).c_str());
 #if GLINT_BENCH_EMBREE
     const auto start = std::chrono::steady_clock::now();
     embree.emplace(soup);
@@ -255,12 +261,11 @@ void closest_hit(benchmark::State& state, RaySet set, Structure structure) {
                       (!hits[i].valid() || std::abs(hits[i].t - reference[i].t) <= 1e-4f * reference[i].t);
     disagree += same ? 0 : 1;
   }
-  state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6,
-                                                 benchmark::Counter::kIsRate);
+  const double mrays = static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6;
+  state.counters["Mrays/s"] = benchmark::Counter(mrays, benchmark::Counter::kIsRate);
   // Per CPU-second of all the process's threads: what a core delivers, far less disturbed than
   // wall time when other processes share the machine.
-  state.counters["Mrays/cpu-s"] =
-      static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6 / cpu_seconds;
+  state.counters["Mrays/cpu-s"] = mrays / cpu_seconds;
   state.counters["hit%"] = 100.0 * static_cast<double>(hit_count) / static_cast<double>(rays.size());
   state.counters["differ%"] = 100.0 * static_cast<double>(disagree) / static_cast<double>(rays.size());
 }

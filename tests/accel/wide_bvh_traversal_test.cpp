@@ -107,7 +107,8 @@ protected:
     WideCollapseOptions collapse;
     if (!merge) collapse.merge_leaf_size = 0;
     const TriangleMesh mesh = reference.mesh.view();
-    const testing::AnyWideBvh wide = testing::collapse_any(config.width, build_bvh(builder, mesh, options), mesh, collapse);
+    const Bvh bvh = build_bvh(builder, mesh, options);
+    const testing::AnyWideBvh wide = testing::collapse_any(config.width, bvh, mesh, collapse);
     std::vector<Hit> hits(reference.rays.size());
     std::vector<uint8_t> occluded(reference.rays.size());
     testing::trace_closest_any_width(wide, reference.rays, hits);
@@ -239,7 +240,9 @@ TEST_P(WideTraversal, MismatchedSpansAreClearErrors) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Accel, WideTraversal, ::testing::ValuesIn(testing::all_wide_configs()),
-                         [](const ::testing::TestParamInfo<WideConfig>& param_info) { return param_info.param.name(); });
+                         [](const ::testing::TestParamInfo<WideConfig>& param_info) {
+                           return param_info.param.name();
+                         });
 
 TEST(WideSimdPathHook, ForcingAndRestoring) {
   force_wide_simd_path(WideSimdPath::sse);
