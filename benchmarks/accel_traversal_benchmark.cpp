@@ -5,6 +5,7 @@
 //   random      origins uniform in the scene box, uniform directions (incoherent)
 //   primary     a 1280x720 camera at a walkthrough frame (coherent)
 //   reflection  mirror rays from the primary hits (the rays glint's hybrid mode traces)
+//   shadow      any-hit rays from the primary hits to the light (segments, t in [0, 1])
 // Counters: Mrays/s, closest-hit rays per second of wall time (TBB on every core); Mrays/cpu-s,
 // per second of CPU time of all the process's threads (steadier when other work shares the
 // machine); hit% and differ% (hits whose validity or t differs from the binary BVH's by more than
@@ -48,6 +49,7 @@ constexpr int kCameraFrame = 1800;  // one of the paper's comparison frames
 
 struct RaySets {
   std::vector<Ray> random, primary, reflection;
+  std::vector<Ray> shadow;  // from the primary hits to the light, t in [0, 1]
 };
 
 #if GLINT_BENCH_EMBREE
@@ -97,6 +99,24 @@ public:
         Hit hit;
         if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) hit = Hit{rh.ray.tfar, 0, rh.hit.primID, rh.hit.u, rh.hit.v};
         hits[i] = hit;
+      }
+    });
+  }
+
+  void trace_any(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 256), [&](const auto& range) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        const Ray& ray = rays[i];
+        RTCRay r{};
+        r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
+        r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
+        r.tnear = ray.t_min;
+        r.tfar = ray.t_max;
+        r.mask = 0xFFFFFFFFu;
+        rtcOccluded1(scene_, &context, &r);
+        occluded[i] = r.tfar < 0.0f ? 1 : 0;  // Embree sets tfar to -inf on a hit
       }
     });
   }
@@ -163,7 +183,8 @@ struct Fixture {
       ray.direction = glm::normalize(vec3(n(rng), n(rng), n(rng)) + vec3(1e-7f));
     }
 
-    const CameraState camera = WalkthroughAnimation(scene).at(kCameraFrame).camera;
+    const FrameState frame = WalkthroughAnimation(scene).at(kCameraFrame);
+    const CameraState camera = frame.camera;
     const vec3 forward = glm::normalize(camera.target - camera.position);
     const vec3 right = glm::normalize(glm::cross(forward, camera.up));
     const vec3 up = glm::cross(right, forward);
@@ -194,9 +215,14 @@ struct Fixture {
       ray.origin = primary.origin + hits[i].t * primary.direction + offset * normal;
       ray.direction = glm::reflect(primary.direction, normal);
       rays.reflection.push_back(ray);
+      Ray shadow;
+      shadow.origin = ray.origin;
+      shadow.direction = frame.light_position - ray.origin;
+      shadow.t_max = 1.0f;
+      rays.shadow.push_back(shadow);
     }
-    std::fprintf(stderr, "rays: %zu random, %zu primary (frame %d), %zu reflection\n", rays.random.size(),
-                 rays.primary.size(), kCameraFrame, rays.reflection.size());
+    std::fprintf(stderr, "rays: %zu random, %zu primary (frame %d), %zu reflection, %zu shadow\n",
+                 rays.random.size(), rays.primary.size(), kCameraFrame, rays.reflection.size(), rays.shadow.size());
   }
 };
 
@@ -223,6 +249,21 @@ void trace(Structure structure, std::span<const Ray> rays, std::span<Hit> hits) 
     case Structure::embree_medium:
 #if GLINT_BENCH_EMBREE
       f.embree->trace_closest(rays, hits);
+#endif
+      break;
+  }
+}
+
+void trace_any(Structure structure, std::span<const Ray> rays, std::span<uint8_t> occluded) {
+  const Fixture& f = fixture();
+  switch (structure) {
+    case Structure::binary_sah: trace_any(f.bvh, f.mesh, rays, occluded); break;
+    case Structure::wide4_sse: trace_any(f.wide4, rays, occluded); break;
+    case Structure::wide8_sse:
+    case Structure::wide8_avx2: trace_any(f.wide8, rays, occluded); break;
+    case Structure::embree_medium:
+#if GLINT_BENCH_EMBREE
+      f.embree->trace_any(rays, occluded);
 #endif
       break;
   }
@@ -270,6 +311,38 @@ void closest_hit(benchmark::State& state, RaySet set, Structure structure) {
   state.counters["differ%"] = 100.0 * static_cast<double>(disagree) / static_cast<double>(rays.size());
 }
 
+// Shadow rays (any hit) from the primary hits to the light.
+void any_hit(benchmark::State& state, Structure structure) {
+  if (structure == Structure::wide8_avx2 && !cpu_has_avx2()) {
+    state.SkipWithError("no AVX2 on this CPU");
+    return;
+  }
+  if (structure == Structure::wide8_sse) force_wide_simd_path(WideSimdPath::sse);
+  if (structure == Structure::wide8_avx2) force_wide_simd_path(WideSimdPath::avx2);
+  const std::vector<Ray>& rays = fixture().rays.shadow;
+  std::vector<uint8_t> occluded(rays.size());
+  const double cpu_start = process_cpu_seconds();
+  for (auto _ : state) {
+    trace_any(structure, rays, occluded);
+    benchmark::DoNotOptimize(occluded.data());
+    benchmark::ClobberMemory();
+  }
+  const double cpu_seconds = process_cpu_seconds() - cpu_start;
+  force_wide_simd_path(std::nullopt);
+  std::vector<uint8_t> reference(rays.size());
+  trace_any(fixture().bvh, fixture().mesh, rays, reference);
+  size_t occluded_count = 0, disagree = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    occluded_count += occluded[i];
+    disagree += occluded[i] != reference[i] ? 1 : 0;
+  }
+  const double mrays = static_cast<double>(rays.size()) * static_cast<double>(state.iterations()) * 1e-6;
+  state.counters["Mrays/s"] = benchmark::Counter(mrays, benchmark::Counter::kIsRate);
+  state.counters["Mrays/cpu-s"] = mrays / cpu_seconds;
+  state.counters["hit%"] = 100.0 * static_cast<double>(occluded_count) / static_cast<double>(rays.size());
+  state.counters["differ%"] = 100.0 * static_cast<double>(disagree) / static_cast<double>(rays.size());
+}
+
 void register_benchmarks() {
   const std::pair<const char*, RaySet> sets[] = {
       {"random", RaySet::random}, {"primary", RaySet::primary}, {"reflection", RaySet::reflection}};
@@ -291,6 +364,14 @@ void register_benchmarks() {
           ->UseRealTime()
           ->MinTime(1.0);
     }
+  }
+  for (const auto& [structure_name, structure] : structures) {
+    std::string name = "any/shadow/";
+    name += structure_name;
+    benchmark::RegisterBenchmark(name.c_str(), any_hit, structure)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->MinTime(1.0);
   }
 }
 
