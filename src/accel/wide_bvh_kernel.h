@@ -89,7 +89,9 @@ GLINT_WIDE_KERNEL_ATTR inline unsigned intersect_children(const WideNode<N>& nod
   return S::mask(S::le(t_near, t_far));
 }
 
-// Edge values that came out exactly 0 are recomputed in double, as the scalar test does.
+// Edge values that came out exactly 0 are recomputed in double, as the scalar test does. A template
+// over S like everything here, so the SSE and AVX2 files never define one function differently.
+template <class S>
 GLINT_WIDE_KERNEL_ATTR inline float exact_edge(float a, float b, float c, float d) {
   return static_cast<float>(static_cast<double>(a) * b - static_cast<double>(c) * d);
 }
@@ -122,9 +124,9 @@ GLINT_WIDE_KERNEL_ATTR inline unsigned intersect_block(const TriangleBlock<N>& b
     S::store(se0, e0), S::store(se1, e1), S::store(se2, e2);
     for (int lane = 0; lane < N; ++lane) {
       if ((on_edge >> lane & 1u) == 0) continue;
-      se0[lane] = exact_edge(scx[lane], sby[lane], scy[lane], sbx[lane]);
-      se1[lane] = exact_edge(sax[lane], scy[lane], say[lane], scx[lane]);
-      se2[lane] = exact_edge(sbx[lane], say[lane], sby[lane], sax[lane]);
+      se0[lane] = exact_edge<S>(scx[lane], sby[lane], scy[lane], sbx[lane]);
+      se1[lane] = exact_edge<S>(sax[lane], scy[lane], say[lane], scx[lane]);
+      se2[lane] = exact_edge<S>(sbx[lane], say[lane], sby[lane], sax[lane]);
     }
     e0 = S::load(se0), e1 = S::load(se1), e2 = S::load(se2);
   }
