@@ -48,8 +48,8 @@ protected:
       EXPECT_EQ(wide.leaf_count, compute_stats(bvh).leaves);
     }
     if (builder != BvhBuilder::none) {
-      // Collapsing removes levels: every wide level replaces at least log2(N) / ... binary ones on
-      // average; at least the tree is clearly shallower and its nodes clearly fuller than binary.
+      // Collapsing removes levels: the tree is shallower than the binary one and its nodes hold
+      // clearly more than two children on average.
       EXPECT_LT(wide.depth, bvh.depth);
       EXPECT_GT(mean_children(wide), N == 4 ? 2.5 : 3.5);
     }

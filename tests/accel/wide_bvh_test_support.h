@@ -38,7 +38,7 @@ inline std::vector<WideConfig> all_wide_configs() {
   return {{4, WideSimdPath::sse}, {8, WideSimdPath::sse}, {8, WideSimdPath::avx2}};
 }
 
-// Forces the config's SIMD path while alive; skips the test on a CPU without AVX2.
+// Forces the config's SIMD path while alive (tests skip AVX2 configs on CPUs without it first).
 class ScopedWidePath {
 public:
   explicit ScopedWidePath(const WideConfig& config) { force_wide_simd_path(config.path); }
