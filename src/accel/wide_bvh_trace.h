@@ -1,0 +1,36 @@
+#pragma once
+// Batch tracing of wide BVHs on the CPU: TBB over chunks of rays, each traced by the SIMD kernel
+// for the BVH's width (SSE for 4-wide; AVX2 for 8-wide when the CPU has it, else two SSE halves).
+// Hits equal the binary traversal's: the same watertight triangle test, bit for bit.
+#include "accel/ray.h"
+#include "accel/wide_bvh.h"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+namespace glint::accel {
+
+// hits[i] = closest hit of rays[i] (Hit{} on a miss; instance 0 on a hit). glint::Error when the
+// spans differ in size or the BVH is deeper than the kernel's stack allows.
+void trace_closest(const WideBvh4& bvh, std::span<const Ray> rays, std::span<Hit> hits);
+void trace_closest(const WideBvh8& bvh, std::span<const Ray> rays, std::span<Hit> hits);
+
+// occluded[i] = 1 when anything lies on rays[i] within [t_min, t_max], else 0.
+void trace_any(const WideBvh4& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded);
+void trace_any(const WideBvh8& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded);
+
+// Which kernel 8-wide BVHs use.
+enum class WideSimdPath { sse, avx2 };
+
+std::string_view simd_path_name(WideSimdPath path);
+bool cpu_has_avx2();
+// avx2 when the CPU has it, unless a path was forced.
+WideSimdPath wide_simd_path();
+// Test and benchmark hook: force a path for every later call (process-wide; not for use while
+// other threads trace). std::nullopt restores the automatic choice. Forcing avx2 on a CPU without
+// it is a glint::Error.
+void force_wide_simd_path(std::optional<WideSimdPath> path);
+
+}  // namespace glint::accel
