@@ -3,8 +3,15 @@
 #include "accel/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/embree_scene.h"
+#include "accel/kdtree.h"
+#include "accel/kdtree_stats.h"
+#include "accel/kdtree_trace.h"
 #include "accel/refit.h"
 #include "accel/trace.h"
+#include "accel/wide_bvh.h"
+#include "accel/wide_bvh_collapse.h"
+#include "accel/wide_bvh_refit.h"
+#include "accel/wide_bvh_trace.h"
 #include "core/error.h"
 
 #include <chrono>
@@ -58,6 +65,79 @@ Candidate bvh_candidate(accel::BvhBuilder builder) {
   return candidate;
 }
 
+// A binary BVH from `builder` collapsed to N wide with SIMD traversal. Build time is the binary build
+// plus the collapse; refit updates the wide boxes and triangle blocks directly. Its SAH is left out:
+// the AKL formula in bvh_stats is defined for binary nodes.
+template <int N>
+Candidate wide_candidate(accel::BvhBuilder builder) {
+  struct State {
+    accel::WideBvh<N> wide;
+    bool refittable = false;
+    bool built = false;
+  };
+  auto state = std::make_shared<State>();
+  Candidate candidate;
+  candidate.name = wide_candidate_name(builder, N);
+  candidate.build = [state, builder](const accel::TriangleMesh& mesh) {
+    const accel::Bvh binary = accel::build_bvh(builder, mesh);
+    state->wide = accel::collapse_to_wide<N>(binary, mesh);
+    state->refittable = binary.refittable;
+    state->built = true;
+    return binary.build_ms + state->wide.collapse_ms;
+  };
+  candidate.refit = [state](const accel::TriangleMesh& mesh) -> std::optional<double> {
+    if (!state->built) fail("accel-bench: refit before build");
+    if (!state->refittable) return std::nullopt;
+    const auto start = std::chrono::steady_clock::now();
+    accel::refit(state->wide, mesh);
+    return ms_since(start);
+  };
+  candidate.trace_closest = [state](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+    if (!state->built) fail("accel-bench: trace before build");
+    accel::trace_closest(state->wide, rays, hits);
+  };
+  candidate.stats = [state] {
+    CandidateStats stats;
+    stats.nodes = state->wide.nodes.size();
+    stats.memory_bytes = state->wide.nodes.size() * sizeof(accel::WideNode<N>) +
+                         state->wide.blocks.size() * sizeof(accel::TriangleBlock<N>);
+    return stats;
+  };
+  return candidate;
+}
+
+// The SAH kd-tree (Wald & Havran 2006). Not refittable; its SAH (over cells, kd cost constants) is
+// not comparable with the BVHs' and is left out of the table.
+Candidate kdtree_candidate() {
+  struct State {
+    accel::KdTree tree;
+    accel::TriangleMesh mesh;
+    bool built = false;
+  };
+  auto state = std::make_shared<State>();
+  Candidate candidate;
+  candidate.name = "kdtree";
+  candidate.build = [state](const accel::TriangleMesh& mesh) {
+    state->tree = accel::build_kdtree(mesh);
+    state->mesh = mesh;
+    state->built = true;
+    return state->tree.build_ms;
+  };
+  candidate.refit = [](const accel::TriangleMesh&) -> std::optional<double> { return std::nullopt; };
+  candidate.trace_closest = [state](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+    if (!state->built) fail("accel-bench: trace before build");
+    accel::trace_closest(state->tree, state->mesh, rays, hits);
+  };
+  candidate.stats = [state] {
+    const accel::KdTreeStats stats = accel::compute_stats(state->tree);
+    CandidateStats result;
+    result.nodes = stats.nodes;
+    result.memory_bytes = stats.memory_bytes;
+    return result;
+  };
+  return candidate;
+}
+
 Candidate embree_candidate(const accel::EmbreeDevice& device, accel::EmbreeQuality quality) {
   auto scene = std::make_shared<std::unique_ptr<accel::EmbreeScene>>();
   Candidate candidate;
@@ -88,10 +168,22 @@ Candidate embree_candidate(const accel::EmbreeDevice& device, accel::EmbreeQuali
 
 }  // namespace
 
+std::string wide_candidate_name(accel::BvhBuilder builder, int width) {
+  std::string name(accel::builder_name(builder));
+  name += "-wide";
+  name += std::to_string(width);
+  return name;
+}
+
 std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
   std::vector<CandidateEntry> menu;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({std::string(accel::builder_name(builder)), [builder] { return bvh_candidate(builder); }});
+  menu.push_back({"kdtree", [] { return kdtree_candidate(); }});
+  for (const accel::BvhBuilder builder : kWideSources) {
+    menu.push_back({wide_candidate_name(builder, 4), [builder] { return wide_candidate<4>(builder); }});
+    menu.push_back({wide_candidate_name(builder, 8), [builder] { return wide_candidate<8>(builder); }});
+  }
   for (const accel::EmbreeQuality quality : accel::kAllEmbreeQualities)
     menu.push_back({embree_name(quality), [&device, quality] { return embree_candidate(device, quality); }});
   return menu;
@@ -106,6 +198,11 @@ std::vector<std::string> embree_candidate_names() {
 std::vector<std::string> candidate_names() {
   std::vector<std::string> names;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) names.emplace_back(accel::builder_name(builder));
+  names.emplace_back("kdtree");
+  for (const accel::BvhBuilder builder : kWideSources) {
+    names.push_back(wide_candidate_name(builder, 4));
+    names.push_back(wide_candidate_name(builder, 8));
+  }
   for (std::string& name : embree_candidate_names()) names.push_back(std::move(name));
   return names;
 }

@@ -2,6 +2,7 @@
 // The structures accel-bench compares, as a list of entries with one uniform interface. A new
 // structure (a kd-tree, a wide BVH, a GPU builder) is one more entry in candidate_menu(); BVH
 // builders come from accel::kAllBvhBuilders, so a builder added there appears here unasked.
+#include "accel/builder.h"
 #include "accel/embree_device.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
@@ -48,6 +49,11 @@ struct CandidateEntry {
 std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
 
 // The names candidate_menu() has, without needing a device (for validating command lines).
+// The binary builders whose BVHs the menu also offers collapsed to 4 and 8 wide ("sah-wide8", ...):
+// the best-quality refittable ones, so the wide rows answer "how fast can glint trace".
+inline constexpr accel::BvhBuilder kWideSources[] = {accel::BvhBuilder::sah, accel::BvhBuilder::trbvh};
+std::string wide_candidate_name(accel::BvhBuilder builder, int width);
+
 std::vector<std::string> candidate_names();
 std::vector<std::string> embree_candidate_names();
 
