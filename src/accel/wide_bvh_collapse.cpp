@@ -139,6 +139,12 @@ private:
 template <int N>
 WideBvh<N> collapse_to_wide(const Bvh& bvh, const TriangleMesh& mesh, const WideCollapseOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  // Leaves of a spatial-split BVH (sbvh) hold clipped references: a triangle may sit in several
+  // leaves, and its gathered copy would be the whole triangle, not the clipped part the leaf box
+  // bounds. Wide BVHs are made from builders without spatial splits.
+  if (!bvh.refittable)
+    fail("accel: collapse: the '{}' BVH holds split references; collapse a BVH without spatial splits "
+         "(median, sah, lbvh, trbvh, ploc)", bvh.builder);
   if (bvh.prim_indices.size() != mesh.triangle_count)
     fail("accel: collapse: BVH built over {} primitives given a mesh of {} triangles", bvh.prim_indices.size(),
          mesh.triangle_count);

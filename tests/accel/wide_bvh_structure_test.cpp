@@ -5,6 +5,7 @@
 #include "accel/wide_bvh_validate.h"
 #include "core/error.h"
 #include "test_scenes.h"
+#include "wide_bvh_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -63,7 +64,7 @@ TEST_P(WideBvhStructure, Clustered8) { check<8>(testing::make_clustered(62, 3000
 
 std::vector<StructureParam> structure_params() {
   std::vector<StructureParam> params;
-  for (const BvhBuilder builder : kAllBvhBuilders)
+  for (const BvhBuilder builder : testing::collapsible_builders())
     for (const unsigned leaf_size : {1u, 4u, 8u})
       if (builder != BvhBuilder::none || leaf_size == 1u)
         for (const bool merge : {true, false}) params.emplace_back(builder, leaf_size, merge);
@@ -199,6 +200,18 @@ TEST(WideBvhValidate, CatchesBrokenStructures) {
   WideBvh4 wrong_depth = wide;
   wrong_depth.depth += 1;
   EXPECT_THROW(validate_wide_bvh(wrong_depth, view), Error);
+}
+
+TEST(WideBvhCollapse, SplitReferenceBvhIsAClearError) {
+  const testing::TestMesh soup = testing::make_random_soup(63, 500);
+  const TriangleMesh mesh = soup.view();
+  const Bvh sbvh = build_bvh(BvhBuilder::sbvh, mesh);
+  try {
+    collapse_to_wide<8>(sbvh, mesh);
+    FAIL() << "collapsing an sbvh must fail";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("split references"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

@@ -34,6 +34,14 @@ struct WideConfig {
   }
 };
 
+// Every builder a wide BVH can be collapsed from: all but those with split references (sbvh).
+inline std::vector<BvhBuilder> collapsible_builders() {
+  std::vector<BvhBuilder> builders;
+  for (const BvhBuilder builder : kAllBvhBuilders)
+    if (builder != BvhBuilder::sbvh) builders.push_back(builder);
+  return builders;
+}
+
 inline std::vector<WideConfig> all_wide_configs() {
   return {{4, WideSimdPath::sse}, {8, WideSimdPath::sse}, {8, WideSimdPath::avx2}};
 }

@@ -141,7 +141,7 @@ TEST_P(WideTraversalMatchesBruteForce, RayIntervals) { check(interval_reference(
 
 std::vector<WideParam> wide_params() {
   std::vector<WideParam> params;
-  for (const BvhBuilder builder : kAllBvhBuilders)
+  for (const BvhBuilder builder : testing::collapsible_builders())
     for (const unsigned leaf_size : {1u, 4u, 8u})
       if (builder != BvhBuilder::none || leaf_size == 1u)
         for (const WideConfig& config : testing::all_wide_configs())
