@@ -62,18 +62,11 @@ TestMesh make_degenerate_soup(uint32_t seed, uint32_t count) {
   return mesh;
 }
 
-struct Reference {
-  TestMesh mesh;
-  std::vector<Ray> rays;
-  std::vector<Hit> closest;
+struct Reference : testing::BruteForceReference {
   bool expect_all_hit = false;
 
   Reference(TestMesh scene, std::vector<Ray> scene_rays, bool all_hit)
-      : mesh(std::move(scene)), rays(std::move(scene_rays)), expect_all_hit(all_hit) {
-    const TriangleMesh view = mesh.view();
-    closest.resize(rays.size());
-    for (size_t i = 0; i < rays.size(); ++i) closest[i] = testing::brute_force_closest(view, rays[i]);
-  }
+      : BruteForceReference(std::move(scene), std::move(scene_rays)), expect_all_hit(all_hit) {}
 };
 
 // Same answer as brute force: same miss/hit; the same triangle with bit-identical t, u, v, or
@@ -107,18 +100,8 @@ const Reference& soup_reference() {
 
 const Reference& grid_reference() {
   static const Reference reference = [] {
-    TestMesh grid = testing::make_grid(24, false);
-    std::vector<Ray> rays = testing::make_grid_edge_rays(grid, 24, 63);
-    const TestMesh tilted = testing::make_grid(24, true);
-    std::vector<Ray> tilted_rays = testing::make_grid_edge_rays(tilted, 24, 64);
-    const auto offset = static_cast<uint32_t>(grid.positions.size());
-    for (vec3 p : tilted.positions) grid.positions.push_back(p + vec3(0.0f, 0.0f, -40.0f));
-    for (uint32_t i : tilted.indices) grid.indices.push_back(i + offset);
-    for (Ray ray : tilted_rays) {
-      ray.origin.z -= 40.0f;
-      rays.push_back(ray);
-    }
-    return Reference(std::move(grid), std::move(rays), true);
+    testing::StackedGrids grids = testing::make_stacked_grids(24, 63, 64);
+    return Reference(std::move(grids.mesh), std::move(grids.rays), true);
   }();
   return reference;
 }

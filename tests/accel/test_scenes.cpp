@@ -317,4 +317,27 @@ bool brute_force_any(const TriangleMesh& mesh, const Ray& ray) {
   return ::testing::AssertionSuccess();
 }
 
+StackedGrids make_stacked_grids(uint32_t cells, uint32_t flat_seed, uint32_t tilted_seed) {
+  StackedGrids grids{make_grid(cells, false), {}};
+  grids.rays = make_grid_edge_rays(grids.mesh, cells, flat_seed);
+  const TestMesh tilted = make_grid(cells, true);
+  const auto offset = static_cast<uint32_t>(grids.mesh.positions.size());
+  for (const vec3& p : tilted.positions) grids.mesh.positions.push_back(p + vec3(0.0f, 0.0f, -40.0f));
+  for (const uint32_t i : tilted.indices) grids.mesh.indices.push_back(i + offset);
+  for (Ray ray : make_grid_edge_rays(tilted, cells, tilted_seed)) {
+    ray.origin.z -= 40.0f;
+    grids.rays.push_back(ray);
+  }
+  return grids;
+}
+
+BruteForceReference::BruteForceReference(TestMesh scene, std::vector<Ray> scene_rays)
+    : mesh(std::move(scene)), rays(std::move(scene_rays)) {
+  const TriangleMesh view = mesh.view();
+  for (const Ray& ray : rays) {
+    closest.push_back(brute_force_closest(view, ray));
+    occluded.push_back(brute_force_any(view, ray) ? 1 : 0);
+  }
+}
+
 }  // namespace glint::accel::testing

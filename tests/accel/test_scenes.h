@@ -64,4 +64,24 @@ bool brute_force_any(const TriangleMesh& mesh, const Ray& ray);
 // edge, duplicate) and accepted.
 ::testing::AssertionResult same_closest_hit(const Hit& expected, const Hit& actual);
 
+// A flat grid with a tilted grid 40 units below it in one mesh, and edge/vertex rays of both
+// (make_grid_edge_rays, the tilted grid's moved down with it): the tilted grid is reached only
+// through holes, i.e. never, unless the flat grid leaks. Every ray hits.
+struct StackedGrids {
+  TestMesh mesh;
+  std::vector<Ray> rays;
+};
+StackedGrids make_stacked_grids(uint32_t cells, uint32_t flat_seed, uint32_t tilted_seed);
+
+// A scene, its rays and the brute-force answers (closest hit, occlusion), computed once so that
+// every structure under test is compared with the same answers.
+struct BruteForceReference {
+  TestMesh mesh;
+  std::vector<Ray> rays;
+  std::vector<Hit> closest;
+  std::vector<uint8_t> occluded;
+
+  BruteForceReference(TestMesh scene, std::vector<Ray> scene_rays);
+};
+
 }  // namespace glint::accel::testing

@@ -13,21 +13,7 @@ namespace {
 
 using testing::TestMesh;
 
-// A scene, its rays and the brute-force answers, computed once for all builders.
-struct Reference {
-  TestMesh mesh;
-  std::vector<Ray> rays;
-  std::vector<Hit> closest;
-  std::vector<uint8_t> occluded;
-
-  Reference(TestMesh scene, std::vector<Ray> scene_rays) : mesh(std::move(scene)), rays(std::move(scene_rays)) {
-    const TriangleMesh view = mesh.view();
-    for (const Ray& ray : rays) {
-      closest.push_back(testing::brute_force_closest(view, ray));
-      occluded.push_back(testing::brute_force_any(view, ray) ? 1 : 0);
-    }
-  }
-};
+using Reference = testing::BruteForceReference;
 
 const Reference& soup_reference() {
   static const Reference reference = [] {
@@ -40,20 +26,8 @@ const Reference& soup_reference() {
 
 const Reference& grid_reference() {
   static const Reference reference = [] {
-    // Both grids in one mesh: the tilted one sits below the flat one and is hit only by rays
-    // through holes, i.e. never, unless the flat grid leaks.
-    TestMesh grid = testing::make_grid(24, false);
-    std::vector<Ray> rays = testing::make_grid_edge_rays(grid, 24, 23);
-    const TestMesh tilted = testing::make_grid(24, true);
-    std::vector<Ray> tilted_rays = testing::make_grid_edge_rays(tilted, 24, 24);
-    const auto offset = static_cast<uint32_t>(grid.positions.size());
-    for (vec3 p : tilted.positions) grid.positions.push_back(p + vec3(0.0f, 0.0f, -40.0f));
-    for (uint32_t i : tilted.indices) grid.indices.push_back(i + offset);
-    for (Ray ray : tilted_rays) {
-      ray.origin.z -= 40.0f;
-      rays.push_back(ray);
-    }
-    return Reference(std::move(grid), std::move(rays));
+    testing::StackedGrids grids = testing::make_stacked_grids(24, 23, 24);
+    return Reference(std::move(grids.mesh), std::move(grids.rays));
   }();
   return reference;
 }

@@ -16,21 +16,7 @@ namespace {
 using testing::TestMesh;
 using testing::WideConfig;
 
-// A scene, its rays and the brute-force answers, computed once for every configuration.
-struct WideReference {
-  TestMesh mesh;
-  std::vector<Ray> rays;
-  std::vector<Hit> closest;
-  std::vector<uint8_t> occluded;
-
-  WideReference(TestMesh scene, std::vector<Ray> scene_rays) : mesh(std::move(scene)), rays(std::move(scene_rays)) {
-    const TriangleMesh view = mesh.view();
-    for (const Ray& ray : rays) {
-      closest.push_back(testing::brute_force_closest(view, ray));
-      occluded.push_back(testing::brute_force_any(view, ray) ? 1 : 0);
-    }
-  }
-};
+using WideReference = testing::BruteForceReference;
 
 const WideReference& soup_reference() {
   static const WideReference reference = [] {
@@ -52,18 +38,8 @@ const WideReference& clustered_reference() {
 
 const WideReference& grid_reference() {
   static const WideReference reference = [] {
-    // The tilted grid sits below the flat one: only a leak in the flat grid reaches it.
-    TestMesh grid = testing::make_grid(24, false);
-    std::vector<Ray> rays = testing::make_grid_edge_rays(grid, 24, 45);
-    const TestMesh tilted = testing::make_grid(24, true);
-    const auto offset = static_cast<uint32_t>(grid.positions.size());
-    for (vec3 p : tilted.positions) grid.positions.push_back(p + vec3(0.0f, 0.0f, -40.0f));
-    for (uint32_t i : tilted.indices) grid.indices.push_back(i + offset);
-    for (Ray ray : testing::make_grid_edge_rays(tilted, 24, 46)) {
-      ray.origin.z -= 40.0f;
-      rays.push_back(ray);
-    }
-    return WideReference(std::move(grid), std::move(rays));
+    testing::StackedGrids grids = testing::make_stacked_grids(24, 45, 46);
+    return WideReference(std::move(grids.mesh), std::move(grids.rays));
   }();
   return reference;
 }
