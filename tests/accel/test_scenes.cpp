@@ -317,6 +317,15 @@ bool brute_force_any(const TriangleMesh& mesh, const Ray& ray) {
   return ::testing::AssertionSuccess();
 }
 
+std::vector<Ray> make_axis_parallel_rays(const TestMesh& mesh, uint32_t seed, size_t count) {
+  RayOptions options;
+  options.axis_aligned_fraction = 0.6f;
+  options.zero_component_fraction = 0.4f;
+  std::vector<Ray> rays = make_random_rays(mesh, seed, count, options);
+  for (size_t i = 0; i < rays.size(); i += 3) rays[i].origin = glm::round(rays[i].origin * 4.0f) * 0.25f;
+  return rays;
+}
+
 StackedGrids make_stacked_grids(uint32_t cells, uint32_t flat_seed, uint32_t tilted_seed) {
   StackedGrids grids{make_grid(cells, false), {}};
   grids.rays = make_grid_edge_rays(grids.mesh, cells, flat_seed);

@@ -64,6 +64,10 @@ bool brute_force_any(const TriangleMesh& mesh, const Ray& ray);
 // edge, duplicate) and accepted.
 ::testing::AssertionResult same_closest_hit(const Hit& expected, const Hit& actual);
 
+// Random rays of which 60 % are axis-parallel and 40 % have zero direction components, every third
+// starting exactly on a multiple of 0.25 (the planes of axis-aligned triangles and their boxes).
+std::vector<Ray> make_axis_parallel_rays(const TestMesh& mesh, uint32_t seed, size_t count);
+
 // A flat grid with a tilted grid 40 units below it in one mesh, and edge/vertex rays of both
 // (make_grid_edge_rays, the tilted grid's moved down with it): the tilted grid is reached only
 // through holes, i.e. never, unless the flat grid leaks. Every ray hits.

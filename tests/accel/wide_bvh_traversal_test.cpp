@@ -47,12 +47,7 @@ const WideReference& grid_reference() {
 const WideReference& axis_reference() {
   static const WideReference reference = [] {
     TestMesh soup = testing::make_random_soup(47, 2000);
-    testing::RayOptions options;
-    options.axis_aligned_fraction = 0.6f;
-    options.zero_component_fraction = 0.4f;
-    std::vector<Ray> rays = testing::make_random_rays(soup, 48, 10000, options);
-    // Origins exactly on the planes of axis-aligned triangles and their boxes (multiples of 0.25).
-    for (size_t i = 0; i < rays.size(); i += 3) rays[i].origin = glm::round(rays[i].origin * 4.0f) * 0.25f;
+    std::vector<Ray> rays = testing::make_axis_parallel_rays(soup, 48, 10000);
     return WideReference(std::move(soup), std::move(rays));
   }();
   return reference;
