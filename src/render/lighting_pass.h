@@ -4,8 +4,7 @@
 //   inputs:  RasterTargets albedo_reflectivity, world_position, world_normal_roughness, material_id,
 //            shadow_mask; GpuScene materials; FrameConstants UBO at kFrameConstantsBinding
 //   outputs: RasterTargets lit (kLitFormat, linear HDR radiance, a = 1)
-#include "gl/gl_objects.h"
-#include "gl/shader_program.h"
+#include "render/fullscreen_draw.h"
 #include "render/gpu_scene.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
@@ -20,9 +19,7 @@ public:
 
 private:
   const RasterTargets* targets_;
-  GlFramebuffer framebuffer_;
-  GlVertexArray empty_vertex_array_;
-  ShaderProgram program_;
+  FullscreenDraw draw_;
 };
 
 }  // namespace glint::render

@@ -5,8 +5,7 @@
 //   outputs: RasterTargets shadow_mask (kShadowMaskFormat: 1 lit, 0 shadowed, fractional at PCF
 //            edges, 1 for background)
 // Bias and normal offset are in cube texels at the receiver (see shaders/shadow_mask.frag.glsl).
-#include "gl/gl_objects.h"
-#include "gl/shader_program.h"
+#include "render/fullscreen_draw.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
 #include "render/shadow_cube_pass.h"
@@ -21,9 +20,7 @@ public:
 
 private:
   const RasterTargets* targets_;
-  GlFramebuffer framebuffer_;
-  GlVertexArray empty_vertex_array_;  // the full-screen triangle needs no attributes, but core GL needs one bound
-  ShaderProgram program_;
+  FullscreenDraw draw_;
 };
 
 }  // namespace glint::render
