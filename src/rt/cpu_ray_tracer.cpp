@@ -1,0 +1,135 @@
+#include "rt/cpu_ray_tracer.h"
+
+#include "accel/bvh_stats.h"
+#include "accel/refit.h"
+#include "accel/tlas_trace.h"
+#include "core/error.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace glint::rt {
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double sah_cost(const accel::Bvh& bvh, const accel::BuildOptions& build) {
+  return accel::compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
+}
+
+std::vector<accel::Instance> make_instances(const Scene& scene) {
+  std::vector<accel::Instance> instances;
+  instances.reserve(scene.instances.size());
+  for (const Instance& instance : scene.instances) instances.push_back(accel::make_instance(instance.mesh, instance.transform));
+  return instances;
+}
+
+}  // namespace
+
+accel::TriangleMesh CpuRayTracer::mesh_view(const MeshBlas& mesh) const {
+  return accel::make_indexed_mesh(mesh.positions, mesh.indices);
+}
+
+void CpuRayTracer::rebuild_blas(uint32_t mesh_index) {
+  MeshBlas& mesh = meshes_[mesh_index];
+  const accel::TriangleMesh view = mesh_view(mesh);
+  mesh.bvh = accel::build_bvh(options_.builder, view, options_.build);
+  mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
+  // The new BVH lives in new storage: the traversal's view must follow it.
+  blases_[mesh_index] = accel::make_blas(mesh.bvh, view);
+}
+
+void CpuRayTracer::require_built(const char* what) const {
+  if (!built_) fail("rt cpu: {} before build()", what);
+}
+
+void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
+  scene.validate();
+  if (!(options.auto_rebuild_sah_ratio >= 1.0f))
+    fail("rt cpu: auto_rebuild_sah_ratio must be >= 1 (got {})", options.auto_rebuild_sah_ratio);
+  const auto start = std::chrono::steady_clock::now();
+  built_ = false;
+  options_ = options;
+  shape_ = scene_shape(scene);
+  meshes_.clear();
+  meshes_.resize(scene.meshes.size());
+  blases_.assign(scene.meshes.size(), accel::Blas{});
+  for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    meshes_[m].positions = scene.meshes[m].positions;
+    meshes_[m].indices = scene.meshes[m].indices;
+    meshes_[m].deformable = scene.meshes[m].deformable;
+    rebuild_blas(m);
+  }
+  tlas_ = accel::build_tlas(blases_, make_instances(scene), accel::BvhBuilder::sah, options_.build);
+  build_ms_ = ms_since(start);
+  last_update_ms_ = 0.0;
+  rebuilds_ = refits_ = 0;
+  built_ = true;
+}
+
+void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) {
+  require_built("update()");
+  check_update(name(), shape_, scene, dirty_meshes);
+  if (policy != UpdatePolicy::rebuild && !dirty_meshes.empty()) {
+    // Checked before anything changes, so a refused update leaves the structures as they were.
+    for (uint32_t m : dirty_meshes)
+      if (!meshes_[m].bvh.refittable)
+        fail("rt cpu: update policy '{}' refits, but the {} builder's BVHs cannot be refitted (mesh '{}'); use "
+             "policy rebuild or another builder",
+             update_policy_name(policy), accel::builder_name(options_.builder), scene.meshes[m].name);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  for (uint32_t m : dirty_meshes) {
+    MeshBlas& mesh = meshes_[m];
+    // Same count (checked above), new positions: the views' pointers stay valid.
+    std::copy(scene.meshes[m].positions.begin(), scene.meshes[m].positions.end(), mesh.positions.begin());
+    if (policy == UpdatePolicy::rebuild) {
+      rebuild_blas(m);
+      ++rebuilds_;
+      continue;
+    }
+    accel::refit(mesh.bvh, mesh_view(mesh));
+    if (policy == UpdatePolicy::automatic &&
+        sah_cost(mesh.bvh, options_.build) > static_cast<double>(options_.auto_rebuild_sah_ratio) * mesh.sah_at_rebuild) {
+      rebuild_blas(m);
+      ++rebuilds_;
+    } else {
+      ++refits_;
+    }
+  }
+  // Transforms may have moved too (the walkthrough's animated instances): re-read them all, the
+  // TLAS is small.
+  for (size_t i = 0; i < scene.instances.size(); ++i)
+    tlas_.instances[i] = accel::make_instance(scene.instances[i].mesh, scene.instances[i].transform);
+  accel::refit_tlas(tlas_, blases_);
+  last_update_ms_ = ms_since(start);
+}
+
+void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
+  require_built("trace_closest()");
+  accel::trace_closest(tlas_, blases_, rays, hits);
+}
+
+RayTracerStats CpuRayTracer::stats() const {
+  RayTracerStats stats;
+  stats.backend = std::string(name());
+  stats.build_ms = build_ms_;
+  stats.last_update_ms = last_update_ms_;
+  stats.rebuilds = rebuilds_;
+  stats.refits = refits_;
+  uint64_t bytes = accel::compute_stats(tlas_.bvh).memory_bytes + tlas_.instances.size() * sizeof(accel::Instance) +
+                   blases_.size() * sizeof(accel::Blas);
+  for (const MeshBlas& mesh : meshes_) {
+    bytes += accel::compute_stats(mesh.bvh).memory_bytes + mesh.positions.size() * sizeof(vec3) +
+             mesh.indices.size() * sizeof(uint32_t);
+    if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
+    const double drift = sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild;
+    stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);
+  }
+  stats.memory_bytes = bytes;
+  return stats;
+}
+
+}  // namespace glint::rt

@@ -1,0 +1,54 @@
+#pragma once
+// The cpu backend: glint's own two-level structure (accel/tlas.h). One BLAS per mesh, built with
+// AccelOptions::builder over the mesh's object-space triangles, a binned-SAH TLAS over
+// Scene::instances, traced with accel's TBB batch (accel/tlas_trace.h).
+//
+// update(): every dirty mesh's BLAS is rebuilt (rebuild), refitted (refit; a glint::Error for a
+// builder whose BVHs cannot be refitted, e.g. sbvh), or, for automatic, refitted and then rebuilt
+// when its SAH cost (accel::compute_stats) exceeds auto_rebuild_sah_ratio x its SAH cost at its
+// last (re)build. Then the TLAS is refitted over the new BLAS boxes and the current transforms.
+#include "accel/bvh.h"
+#include "accel/tlas.h"
+#include "rt/ray_tracer.h"
+#include "rt/scene_shape.h"
+
+#include <vector>
+
+namespace glint::rt {
+
+class CpuRayTracer final : public RayTracer {
+public:
+  void build(const Scene& scene, const AccelOptions& options) override;
+  void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) override;
+  void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  RayTracerStats stats() const override;
+  std::string_view name() const override { return "cpu"; }
+
+private:
+  // One mesh's own copy of its geometry (the BLAS views point into it, so the caller's scene may
+  // change) and its BVH.
+  struct MeshBlas {
+    std::vector<vec3> positions;
+    std::vector<uint32_t> indices;
+    accel::Bvh bvh;
+    bool deformable = false;
+    double sah_at_rebuild = 0.0;  // SAH cost right after the last (re)build
+  };
+
+  accel::TriangleMesh mesh_view(const MeshBlas& mesh) const;
+  void rebuild_blas(uint32_t mesh_index);
+  void require_built(const char* what) const;
+
+  AccelOptions options_;
+  SceneShape shape_;
+  std::vector<MeshBlas> meshes_;
+  std::vector<accel::Blas> blases_;  // views of meshes_, one per mesh, rebuilt with the BVHs
+  accel::Tlas tlas_;
+  bool built_ = false;
+  double build_ms_ = 0.0;
+  double last_update_ms_ = 0.0;
+  size_t rebuilds_ = 0;
+  size_t refits_ = 0;
+};
+
+}  // namespace glint::rt

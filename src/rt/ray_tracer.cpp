@@ -1,0 +1,32 @@
+#include "rt/ray_tracer.h"
+
+#include "core/error.h"
+#include "rt/cpu_ray_tracer.h"
+#include "rt/embree_ray_tracer.h"
+
+namespace glint::rt {
+
+RayTracer::~RayTracer() = default;
+
+std::string_view update_policy_name(UpdatePolicy policy) {
+  switch (policy) {
+    case UpdatePolicy::rebuild: return "rebuild";
+    case UpdatePolicy::refit: return "refit";
+    case UpdatePolicy::automatic: return "auto";
+  }
+  return "?";
+}
+
+UpdatePolicy parse_update_policy(std::string_view name) {
+  for (UpdatePolicy policy : kAllUpdatePolicies)
+    if (update_policy_name(policy) == name) return policy;
+  fail("unknown update policy \"{}\" (known: rebuild, refit, auto)", name);
+}
+
+std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend) {
+  if (backend == "cpu") return std::make_unique<CpuRayTracer>();
+  if (backend == "embree") return std::make_unique<EmbreeRayTracer>();
+  fail("unknown ray tracing backend \"{}\" (known: cpu, embree)", backend);
+}
+
+}  // namespace glint::rt

@@ -1,0 +1,89 @@
+#pragma once
+// The RayTracer interface: what the hybrid renderer calls with the rays of the pixels where
+// screen-space reflections failed. Every backend (cpu: glint's own two-level BVH; embree: Embree 3
+// instancing) answers the same closest-hit query with the same hit convention, so the shading pass
+// and the image are independent of the backend, and backends can be compared ray by ray.
+//
+// Hit convention (all backends): hit.instance is the index in Scene::instances, hit.prim the
+// triangle's index within that instance's mesh (Scene::meshes[instances[instance].mesh], triangle
+// indices[3 prim .. 3 prim + 2]), u, v its barycentrics (point = (1 - u - v) v0 + u v1 + v v2) and
+// t is measured along the world ray's unnormalised direction. A miss is Hit{} (prim == kInvalidIndex).
+#include "accel/builder.h"
+#include "accel/build_options.h"
+#include "accel/ray.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace glint::rt {
+
+// What update() does with the acceleration structure of a mesh whose vertices moved:
+// rebuild: build it again from scratch (best traversal, slowest update);
+// refit: keep its topology and recompute the boxes (fast, quality decays as the motion grows);
+// automatic: refit, then rebuild when the refitted structure got too much worse (see AccelOptions).
+enum class UpdatePolicy { rebuild, refit, automatic };
+
+inline constexpr UpdatePolicy kAllUpdatePolicies[] = {UpdatePolicy::rebuild, UpdatePolicy::refit,
+                                                      UpdatePolicy::automatic};
+
+// CLI names: "rebuild", "refit", "auto".
+std::string_view update_policy_name(UpdatePolicy policy);
+// Inverse of update_policy_name; glint::Error listing the known names otherwise.
+UpdatePolicy parse_update_policy(std::string_view name);
+
+struct AccelOptions {
+  // cpu backend: the builder of every BLAS (the TLAS over instances is always binned SAH: it is
+  // small, and it must be refittable whatever the BLAS builder is).
+  accel::BvhBuilder builder = accel::BvhBuilder::sah;
+  accel::BuildOptions build;
+  // UpdatePolicy::automatic (cpu backend): a deformable mesh's BLAS is refitted, and rebuilt when
+  // its SAH cost after the refit exceeds this factor times its SAH cost at its last (re)build.
+  float auto_rebuild_sah_ratio = 1.3f;
+};
+
+struct RayTracerStats {
+  double build_ms = 0.0;        // the last build(): every BLAS and the TLAS
+  double last_update_ms = 0.0;  // the last update(): dirty BLASes and the TLAS
+  uint64_t memory_bytes = 0;    // structures plus the backend's own copy of the geometry
+  size_t rebuilds = 0;          // BLAS rebuilds done by update() since build()
+  size_t refits = 0;            // BLAS refits kept by update() since build()
+  // Max over deformable meshes' BLASes of (SAH cost now) / (SAH cost at its last rebuild): how much
+  // refitting has degraded the structures. Absent when there is no deformable mesh or the backend
+  // cannot measure it (Embree does not expose its nodes).
+  std::optional<double> blas_sah_drift;
+  std::string backend;          // "cpu", "embree"
+};
+
+class RayTracer {
+public:
+  virtual ~RayTracer();
+
+  // Builds the structures over every mesh and instance of `scene`, replacing any previous ones.
+  // The backend copies what it needs: `scene` may change or go away afterwards.
+  // glint::Error for an invalid scene (Scene::validate) or options.
+  virtual void build(const Scene& scene, const AccelOptions& options) = 0;
+
+  // After the vertices of `dirty_meshes` moved (same vertex and triangle counts, same indices, e.g.
+  // the list SceneDeformers::apply returns), brings the structures up to date with `scene` by
+  // `policy`; instance transforms are re-read too. glint::Error before build(), for a mesh index out
+  // of range, a changed vertex/triangle count, or a refit of a structure that cannot be refitted.
+  virtual void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
+
+  // hits[i] = closest hit of rays[i] within [t_min, t_max] (convention above). TBB-parallel.
+  // glint::Error before build() or when the spans differ in size.
+  virtual void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const = 0;
+
+  virtual RayTracerStats stats() const = 0;
+  virtual std::string_view name() const = 0;
+};
+
+// "cpu" or "embree"; glint::Error listing the known names otherwise.
+std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
+
+}  // namespace glint::rt
