@@ -15,24 +15,6 @@
 
 namespace glint::accel {
 
-// The ray's [t_near, t_far] inside `box`, conservative like intersect_box.
-GLINT_HOST_DEVICE inline bool clip_to_box(const BoxRay& ray, const Aabb& box, float t_min, float t_max, float& t_near,
-                                          float& t_far) {
-  t_near = t_min;
-  t_far = kInfinity;
-  for (int axis = 0; axis < 3; ++axis) {
-    const float inv = ray.inv_direction[axis];
-    const float near_plane = inv < 0.0f ? box.max[axis] : box.min[axis];
-    const float far_plane = inv < 0.0f ? box.min[axis] : box.max[axis];
-    const float t0 = (near_plane - ray.origin[axis]) * inv;
-    const float t1 = (far_plane - ray.origin[axis]) * inv;
-    t_near = t0 > t_near ? t0 : t_near;
-    t_far = t1 < t_far ? t1 : t_far;
-  }
-  t_far = (t_far < t_max ? t_far : t_max) * kSlabFarScale;
-  return t_near <= t_far;
-}
-
 // Calls intersect_prim(prim, t_max) for the triangles of the leaves the ray segment crosses, front
 // to back; it returns true on a hit and may lower t_max. With kAnyHit, stops at the first hit.
 template <bool kAnyHit, typename IntersectPrim>
@@ -41,7 +23,7 @@ GLINT_HOST_DEVICE bool traverse_kdtree(const KdTreeView& tree, const vec3& origi
   if (tree.node_count == 0) return false;
   const BoxRay box_ray = make_box_ray(origin, direction);
   float t_near, t_far;
-  if (!clip_to_box(box_ray, tree.bounds, t_min, t_max, t_near, t_far)) return false;
+  if (!clip_to_box(box_ray, tree.bounds.min, tree.bounds.max, t_min, t_max, t_near, t_far)) return false;
 
   uint32_t stack_node[kMaxKdDepth];
   float stack_near[kMaxKdDepth], stack_far[kMaxKdDepth];
