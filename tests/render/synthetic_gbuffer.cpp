@@ -129,28 +129,29 @@ CpuGBuffer rasterize(const SyntheticScene& scene, const FrameConstants& constant
   return g;
 }
 
-GlTexture upload_rgba(GLenum internal_format, int width, int height, const std::vector<vec4>& pixels) {
+namespace {
+
+// One RGBA texture with immutable storage, filled from `texels` given as `type`.
+GlTexture upload_texels(GLenum internal_format, int width, int height, GLenum type, const void* texels) {
   GlTexture texture = create_texture_2d(internal_format, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
-  check_gl("test upload rgba");
+  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, type, texels);
+  check_gl("test texture upload");
   return texture;
+}
+
+}  // namespace
+
+GlTexture upload_rgba(GLenum internal_format, int width, int height, const std::vector<vec4>& pixels) {
+  return upload_texels(internal_format, width, height, GL_FLOAT, pixels.data());
 }
 
 GlTexture upload_rgba8(int width, int height, const std::vector<glm::u8vec4>& pixels) {
-  GlTexture texture = create_texture_2d(GL_RGBA8, width, height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  check_gl("test upload rgba8");
-  return texture;
+  return upload_texels(GL_RGBA8, width, height, GL_UNSIGNED_BYTE, pixels.data());
 }
 
 GlTexture upload_rgba16f_bits(int width, int height, const std::vector<std::uint16_t>& halves) {
-  GlTexture texture = create_texture_2d(GL_RGBA16F, width, height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, GL_RGBA, GL_HALF_FLOAT, halves.data());
-  check_gl("test upload rgba16f bits");
-  return texture;
+  return upload_texels(GL_RGBA16F, width, height, GL_HALF_FLOAT, halves.data());
 }
 
 GpuGBuffer upload(const CpuGBuffer& g, const FrameConstants& constants) {
