@@ -10,7 +10,9 @@
 #include "core/progress_bar.h"
 #include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
+#include "accel/builder.h"
 #include "render/frame_pipeline.h"
+#include "rt/ray_tracer.h"
 #include "scene/camera_path.h"
 #include "scene/load_scene.h"
 #include "scene/sine_deformer.h"
@@ -19,6 +21,9 @@
 
 #include <chrono>
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -39,17 +44,40 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   settings.resolve.blur_radius = options.blur_radius;
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
+  if (options.backend == "embree" && options.accel != "sah")
+    fail("--accel {} applies to the cpu backend; the embree backend builds its own structures", options.accel);
+  settings.ray_tracing.backend = options.backend;
+  settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
+  settings.ray_tracing.update = rt::parse_update_policy(options.update);
   settings.validate();
   return settings;
 }
 
-// Moves the deformable meshes to `frame` and copies their new vertices to the GPU; returns the time.
-double deform(SceneDeformers* deformers, Scene& scene, render::FramePipeline& pipeline, int frame) {
-  if (deformers == nullptr) return 0.0;
+struct DeformTimes {
+  double deform_ms = 0.0;        // the deformers and the GPU vertex upload
+  double accel_update_ms = 0.0;  // the ray tracer's structures
+};
+
+// Moves the deformable meshes to `frame`, copies their new vertices to the GPU and updates the ray
+// tracer's structures.
+DeformTimes deform(SceneDeformers* deformers, Scene& scene, render::FramePipeline& pipeline, int frame) {
+  if (deformers == nullptr) return {};
   const auto start = Clock::now();
-  for (const std::uint32_t mesh : deformers->apply(scene, frame))
-    pipeline.raster().gpu_scene().update_mesh_vertices(mesh, scene.meshes[mesh].positions, scene.meshes[mesh].normals);
-  return milliseconds_since(start);
+  const std::vector<std::uint32_t> dirty = deformers->apply(scene, frame);
+  pipeline.upload_meshes(dirty);
+  DeformTimes times;
+  times.deform_ms = milliseconds_since(start);
+  times.accel_update_ms = pipeline.update_ray_tracer(dirty);
+  return times;
+}
+
+std::string builder_names() {
+  std::string names;
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) {
+    if (!names.empty()) names += ", ";
+    names += accel::builder_name(builder);
+  }
+  return names;
 }
 
 }  // namespace
@@ -59,8 +87,29 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       "render", "Render frames of a scene's walkthrough headless: PNG frames, timings.csv, run.json");
   command->add_option("scene", options.scene, "Preset (atrium, atrium-simple, sponza) or scene file")
       ->capture_default_str();
-  command->add_option("--reflections", options.reflections, "Reflections: off (direct light only) or ssr")
-      ->check(CLI::IsMember({"off", "ssr"}))
+  command->add_option("--reflections", options.reflections,
+                      "Reflections: off (direct light only), ssr (screen space only), hybrid (SSR, rays where it "
+                      "failed) or rt (rays for every reflective pixel: the reference)")
+      ->check(CLI::IsMember({"off", "ssr", "hybrid", "rt"}))
+      ->capture_default_str();
+  command->add_option("--backend", options.backend,
+                      "Ray tracing backend for hybrid and rt: cpu (glint's own structures) or embree")
+      ->check(CLI::IsMember({"cpu", "embree"}))
+      ->capture_default_str();
+  command->add_option("--accel", options.accel, "Structure of the cpu backend's per-mesh BVHs: " + builder_names())
+      ->check([](const std::string& name) {
+        try {
+          (void)accel::parse_bvh_builder(name);
+          return std::string();
+        } catch (const Error& error) {
+          return std::string(error.what());
+        }
+      })
+      ->capture_default_str();
+  command->add_option("--update", options.update,
+                      "How deforming meshes' structures follow them each frame: rebuild, refit, or auto (refit, "
+                      "rebuild once the SAH cost drifted 30 % above the last build's)")
+      ->check(CLI::IsMember({"rebuild", "refit", "auto"}))
       ->capture_default_str();
   command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   command->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -119,6 +168,7 @@ int run_render_command(const RenderOptions& options) {
   GpuTimer timer(pass_timing_for_renderer(context.renderer()));
 
   RenderRunRecord record(options, scene, context, timer.method(), frames);
+  if (pipeline.ray_tracer() != nullptr) record.set_ray_tracer(settings.ray_tracing, pipeline.ray_tracer()->stats());
   CsvWriter timings(out.path() / "timings.csv", RenderRunRecord::timings_header());
   std::optional<FfmpegVideoWriter> video;
   if (options.video)
@@ -128,7 +178,7 @@ int run_render_command(const RenderOptions& options) {
   const auto run_start = Clock::now();
   for (const int frame : frames) {
     const auto frame_start = Clock::now();
-    const double deform_ms = deform(deformers ? &*deformers : nullptr, scene, pipeline, frame);
+    const DeformTimes deform_times = deform(deformers ? &*deformers : nullptr, scene, pipeline, frame);
     timer.begin_frame();
     pipeline.render(animation.at(frame), &timer);
     timer.end_frame();
@@ -144,14 +194,18 @@ int run_render_command(const RenderOptions& options) {
       for (const render::DebugView& view : pipeline.read_debug_views()) write_png(out.debug_view_path(frame, view.name), view.image);
 
     timer.wait_for_all();
-    for (const FrameTimes& times : timer.take_completed())
-      timings.add_row(record.add_frame(frame, times, cpu_frame_ms, deform_ms, pipeline.read_counts()));
+    for (FrameTimes& times : timer.take_completed())
+      timings.add_row(record.add_frame({frame, std::move(times), cpu_frame_ms, deform_times.deform_ms,
+                                        deform_times.accel_update_ms, pipeline.read_counts(),
+                                        pipeline.ray_trace_stats()}));
     progress.tick();
   }
   progress.finish();
   if (video) video->finish();
   timings.commit();
-  record.write(out.path() / "run.json", milliseconds_since(run_start));
+  std::optional<rt::RayTracerStats> tracer_stats;
+  if (pipeline.ray_tracer() != nullptr) tracer_stats = pipeline.ray_tracer()->stats();
+  record.write(out.path() / "run.json", milliseconds_since(run_start), tracer_stats);
   log_info("wrote {} frames to {}", frames.size(), out.path().string());
   return 0;
 }

@@ -10,7 +10,10 @@ namespace glint {
 
 struct RenderOptions {
   std::string scene = "atrium";
-  std::string reflections = "ssr";
+  std::string reflections = "hybrid";  // off|ssr|hybrid|rt
+  std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree
+  std::string accel = "sah";           // cpu backend's BLAS builder (accel::builder_name)
+  std::string update = "auto";         // deformed meshes' structures: rebuild|refit|auto
   int width = 1280;
   int height = 720;
   std::string frames;             // FrameSelection text; empty = the whole walkthrough

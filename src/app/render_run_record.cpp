@@ -33,6 +33,9 @@ nlohmann::json scene_summary(const Scene& scene) {
 
 nlohmann::json options_summary(const RenderOptions& options) {
   return {{"reflections", options.reflections},
+          {"backend", options.backend},
+          {"accel", options.accel},
+          {"update", options.update},
           {"deform", options.deform},
           {"debug_views", options.debug_views},
           {"video", options.video},
@@ -71,20 +74,19 @@ RenderRunRecord::RenderRunRecord(const RenderOptions& options, const Scene& scen
 std::vector<std::string> RenderRunRecord::timings_header() {
   std::vector<std::string> header{"frame"};
   for (const std::string_view pass : render::kFramePassNames) header.push_back(std::string(pass) + "_ms");
-  for (const char* column : {"gpu_total_ms", "cpu_frame_ms", "deform_ms", "triangles", "reflective_pixels",
-                             "ssr_failed_pixels"})
+  for (const char* column : {"gpu_total_ms", "cpu_frame_ms", "deform_ms", "accel_update_ms", "trace_ms", "triangles",
+                             "reflective_pixels", "ssr_failed_pixels", "rays_traced"})
     header.emplace_back(column);
   return header;
 }
 
-std::vector<CsvField> RenderRunRecord::add_frame(int frame, const FrameTimes& times, double cpu_frame_ms,
-                                                 double deform_ms, const std::optional<render::SsrCounts>& counts) {
-  std::vector<CsvField> row{frame};
+std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
+  std::vector<CsvField> row{frame.frame};
   std::map<std::string, double>& recorded = frame_ms_.emplace_back();
   double gpu_total_ms = 0.0;
   for (const std::string_view pass : render::kFramePassNames) {
     std::optional<double> ms;
-    for (const PassTime& time : times.passes)
+    for (const PassTime& time : frame.times.passes)
       if (time.name == pass) ms = ms.value_or(0.0) + time.milliseconds;
     if (ms) {
       row.emplace_back(*ms);
@@ -94,20 +96,44 @@ std::vector<CsvField> RenderRunRecord::add_frame(int frame, const FrameTimes& ti
       row.emplace_back("");
     }
   }
+  const auto& ssr = frame.ssr_counts;
+  const auto& rays = frame.ray_stats;
   row.emplace_back(gpu_total_ms);
-  row.emplace_back(cpu_frame_ms);
-  row.emplace_back(deform_ms);
+  row.emplace_back(frame.cpu_frame_ms);
+  row.emplace_back(frame.deform_ms);
+  row.emplace_back(rays ? CsvField(frame.accel_update_ms) : CsvField(""));
+  row.emplace_back(rays ? CsvField(rays->trace_ms) : CsvField(""));
   row.emplace_back(triangles_);
-  row.emplace_back(counts ? CsvField(counts->reflective) : CsvField(""));
-  row.emplace_back(counts ? CsvField(counts->failed) : CsvField(""));
+  row.emplace_back(ssr ? CsvField(ssr->reflective) : rays ? CsvField(rays->reflective_pixels) : CsvField(""));
+  row.emplace_back(ssr ? CsvField(ssr->failed) : CsvField(""));
+  row.emplace_back(rays ? CsvField(rays->rays_traced) : CsvField(""));
   recorded["gpu_total_ms"] = gpu_total_ms;
-  recorded["cpu_frame_ms"] = cpu_frame_ms;
-  recorded["deform_ms"] = deform_ms;
+  recorded["cpu_frame_ms"] = frame.cpu_frame_ms;
+  recorded["deform_ms"] = frame.deform_ms;
+  if (rays) {
+    recorded["accel_update_ms"] = frame.accel_update_ms;
+    recorded["trace_ms"] = rays->trace_ms;
+    recorded["rays_traced"] = rays->rays_traced;
+  }
   return row;
 }
 
-void RenderRunRecord::write(const std::filesystem::path& path, double wall_ms) const {
+void RenderRunRecord::set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats) {
+  run_["ray_tracer"] = {{"backend", settings.backend},
+                        {"accel", std::string(accel::builder_name(settings.accel.builder))},
+                        {"update", std::string(rt::update_policy_name(settings.update))},
+                        {"build_ms", stats.build_ms},
+                        {"memory_bytes", stats.memory_bytes}};
+}
+
+void RenderRunRecord::write(const std::filesystem::path& path, double wall_ms,
+                            const std::optional<rt::RayTracerStats>& final_tracer_stats) const {
   nlohmann::json run = run_;
+  if (final_tracer_stats) {
+    run["ray_tracer"]["rebuilds"] = final_tracer_stats->rebuilds;
+    run["ray_tracer"]["refits"] = final_tracer_stats->refits;
+    if (final_tracer_stats->blas_sah_drift) run["ray_tracer"]["final_blas_sah_drift"] = *final_tracer_stats->blas_sah_drift;
+  }
   const std::size_t skipped = frame_ms_.size() > 1 ? 1 : 0;
   std::map<std::string, double> sums;
   for (std::size_t i = skipped; i < frame_ms_.size(); ++i)

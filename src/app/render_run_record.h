@@ -6,7 +6,9 @@
 #include "core/csv_writer.h"
 #include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
+#include "render/ray_traced_reflections.h"
 #include "render/ssr_pass.h"
+#include "rt/ray_tracer.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -24,18 +26,34 @@ public:
   RenderRunRecord(const RenderOptions& options, const Scene& scene, const HeadlessGlContext& context,
                   PassTimingMethod pass_timing, const std::vector<int>& frames);
 
+  // What one frame measured.
+  struct Frame {
+    int frame = 0;
+    FrameTimes times;                                    // GPU passes
+    double cpu_frame_ms = 0.0;                           // wall clock of the whole frame
+    double deform_ms = 0.0;                              // deformers + GPU vertex upload
+    double accel_update_ms = 0.0;                        // the ray tracer's update of deformed meshes
+    std::optional<render::SsrCounts> ssr_counts;         // with SSR
+    std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
+  };
+
   // Column names of timings.csv: frame, <pass>_ms for every pass of render::kFramePassNames,
-  // gpu_total_ms, cpu_frame_ms, deform_ms, triangles, reflective_pixels, ssr_failed_pixels.
+  // gpu_total_ms, cpu_frame_ms, deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,
+  // ssr_failed_pixels, rays_traced.
   static std::vector<std::string> timings_header();
 
   // The timings.csv row of one frame (and remembers it for the means in run.json). A pass that did
   // not run (ssr with reflections off) and counts that were not made are empty fields.
-  std::vector<CsvField> add_frame(int frame, const FrameTimes& times, double cpu_frame_ms, double deform_ms,
-                                  const std::optional<render::SsrCounts>& counts);
+  std::vector<CsvField> add_frame(const Frame& frame);
+
+  // The ray tracer's backend, structure, policy and build statistics, for run.json.
+  void set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats);
 
   // Writes run.json (atomically) with the means over the frames recorded so far, leaving out the
-  // first frame when there are more (it pays for shader compilation and first-touch uploads).
-  void write(const std::filesystem::path& path, double wall_ms) const;
+  // first frame when there are more (it pays for shader compilation and first-touch uploads), and
+  // the ray tracer's final statistics when there is one.
+  void write(const std::filesystem::path& path, double wall_ms,
+             const std::optional<rt::RayTracerStats>& final_tracer_stats = std::nullopt) const;
 
 private:
   nlohmann::json run_;

@@ -101,4 +101,15 @@ private:
   std::vector<FrameTimes> completed_;
 };
 
+// Runs `work` as a pass named `name` of `timer`, or untimed when `timer` is null.
+template <typename Work>
+void run_timed_pass(GpuTimer* timer, std::string_view name, Work&& work) {
+  if (timer == nullptr) {
+    work();
+    return;
+  }
+  auto scope = timer->time_pass(name);
+  work();
+}
+
 }  // namespace glint

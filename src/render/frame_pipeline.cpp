@@ -8,28 +8,28 @@
 namespace glint::render {
 namespace {
 
-// Runs `work` as a timed pass when there is a timer.
-template <typename Work>
-void timed(GpuTimer* timer, std::string_view name, Work&& work) {
-  if (timer == nullptr) {
-    work();
-    return;
-  }
-  auto scope = timer->time_pass(name);
-  work();
+GlTexture make_reflection_image(int width, int height) {
+  GlTexture texture = create_texture_2d(kReflectionFormat, width, height);
+  check_gl("creating the reflection image");
+  return texture;
 }
 
-GlTexture make_cleared_reflection(int width, int height) {
-  GlTexture texture = create_texture_2d(kReflectionFormat, width, height);
+void clear_reflection(GLuint texture) {
   const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearTexImage(texture.id(), 0, GL_RGBA, GL_FLOAT, zero);
-  check_gl("clearing the empty reflection image");
-  return texture;
+  glClearTexImage(texture, 0, GL_RGBA, GL_FLOAT, zero);
+  check_gl("clearing the reflection image");
 }
 
 const FramePipelineSettings& validated(const FramePipelineSettings& settings) {
   settings.validate();
   return settings;
+}
+
+// The part of a reflection image where the failure mask is `keep` (1: traced, 0: SSR), the rest 0.
+ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float keep) {
+  for (std::size_t i = 0; i < reflection.pixels.size(); ++i)
+    if (failure_mask.pixels[i].x != keep) reflection.pixels[i] = vec4(0.0f);
+  return reflection;
 }
 
 }  // namespace
@@ -38,6 +38,7 @@ void FramePipelineSettings::validate() const {
   raster.validate();
   render::validate(ssr);
   render::validate(resolve);
+  if (uses_ray_tracing(reflections)) ray_tracing.validate();
 }
 
 FramePipeline::FramePipeline(const Scene& scene, int width, int height, const FramePipelineSettings& settings)
@@ -45,23 +46,41 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
       settings_(validated(settings)),
       raster_(scene, width, height, settings.raster),
       resolve_(width, height, settings.resolve) {
-  if (settings_.reflections == ReflectionMode::off)
-    no_reflection_ = make_cleared_reflection(width, height);
-  else
-    ssr_.emplace(width, height, settings_.ssr);
+  if (uses_ssr(settings_.reflections)) ssr_.emplace(width, height, settings_.ssr);
+  if (uses_ray_tracing(settings_.reflections)) ray_traced_.emplace(scene, width, height, settings_.ray_tracing);
+  if (!ssr_) {
+    own_reflection_ = make_reflection_image(width, height);
+    clear_reflection(own_reflection_.id());
+  }
 }
+
+void FramePipeline::upload_meshes(std::span<const std::uint32_t> dirty_meshes) {
+  for (const std::uint32_t mesh : dirty_meshes)
+    raster_.gpu_scene().update_mesh_vertices(mesh, scene_->meshes.at(mesh).positions, scene_->meshes.at(mesh).normals);
+}
+
+double FramePipeline::update_ray_tracer(std::span<const std::uint32_t> dirty_meshes) {
+  if (!ray_traced_ || dirty_meshes.empty()) return 0.0;
+  return ray_traced_->update_meshes(*scene_, dirty_meshes);
+}
+
+GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection() : own_reflection_.id(); }
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   raster_.render(frame, timer);
-  GLuint reflection = no_reflection_.id();
   if (ssr_) {
-    timed(timer, "ssr", [&] {
+    run_timed_pass(timer, "ssr", [&] {
       ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
                  raster_.lit(), raster_.frame_constants_buffer()});
     });
-    reflection = ssr_->reflection();
   }
-  timed(timer, "resolve", [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection}); });
+  if (ray_traced_) {
+    // rt: the ray tracer writes every reflective pixel of a cleared image; hybrid: SSR's failed ones.
+    if (!ssr_) clear_reflection(own_reflection_.id());
+    ray_trace_stats_ = ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
+  }
+  run_timed_pass(timer, "resolve",
+                 [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image()}); });
 }
 
 ImageRgba8 FramePipeline::read_final() const {
@@ -80,11 +99,20 @@ std::vector<DebugView> FramePipeline::read_debug_views() const {
   views.push_back({"positions", position_view(raster_.read_rgbaf(RasterOutput::WorldPosition), scene_->world_bounds())});
   views.push_back({"depth", depth_view(raster_.read_rgbaf(RasterOutput::WorldPosition), raster_.frame_constants())});
   views.push_back({"shadow_mask", grey_view(raster_.read_rgbaf(RasterOutput::ShadowMask))});
-  if (ssr_) {
-    views.push_back({"ssr_reflection",
-                     reflection_view(read_texture_rgbaf(ssr_->reflection(), kReflectionFormat, width(), height()))});
-    views.push_back({"failure_mask",
-                     grey_view(read_texture_rgbaf(ssr_->failure_mask(), kFailureMaskFormat, width(), height()))});
+  if (settings_.reflections == ReflectionMode::off) return views;
+
+  const ImageRgbaF reflection = read_texture_rgbaf(reflection_image(), kReflectionFormat, width(), height());
+  if (!ssr_) {
+    views.push_back({"traced_reflection", reflection_view(reflection)});
+    return views;
+  }
+  const ImageRgbaF failure_mask = read_texture_rgbaf(ssr_->failure_mask(), kFailureMaskFormat, width(), height());
+  // Hit shading writes exactly the failed pixels, so the mask splits the image into its two sources.
+  views.push_back({"ssr_reflection", reflection_view(masked(reflection, failure_mask, 0.0f))});
+  views.push_back({"failure_mask", grey_view(failure_mask)});
+  if (ray_traced_) {
+    views.push_back({"traced_reflection", reflection_view(masked(reflection, failure_mask, 1.0f))});
+    views.push_back({"reflection", reflection_view(reflection)});
   }
   return views;
 }

@@ -1,8 +1,9 @@
 #pragma once
-// One frame of glint's renderer, in order: the raster passes (G-buffer, shadow, light), SSR when
-// reflections are on, then resolve (fade, blur, composite, tone map). Every pass is timed under
-// its name in kFramePassNames when a GpuTimer is given; the frame's final image stays on the GPU
-// until read_final() copies it out.
+// One frame of glint's renderer, in order: the raster passes (G-buffer, shadow, light), SSR (ssr
+// and hybrid modes), the ray-traced complement (hybrid: SSR-failed pixels; rt: every reflective
+// pixel; see ray_traced_reflections.h), then resolve (fade, blur, composite, tone map). Every GPU
+// pass is timed under its name in kFramePassNames when a GpuTimer is given; the frame's final image
+// stays on the GPU until read_final() copies it out.
 //
 //   FramePipeline pipeline(scene, 1280, 720, settings);
 //   timer.begin_frame();
@@ -14,6 +15,7 @@
 #include "gl/gpu_timer.h"
 #include "render/raster_pipeline.h"
 #include "render/raster_settings.h"
+#include "render/ray_traced_reflections.h"
 #include "render/reflection_mode.h"
 #include "render/resolve_pass.h"
 #include "render/resolve_settings.h"
@@ -22,7 +24,9 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
+#include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,13 +35,15 @@ namespace glint::render {
 
 // Timer names of the passes, in the order timings.csv lists them (not the order they run:
 // the shadow mask needs the G-buffer, so "gbuffer" runs first).
-inline constexpr std::string_view kFramePassNames[] = {"shadow", "gbuffer", "light", "ssr", "resolve"};
+inline constexpr std::string_view kFramePassNames[] = {"shadow",   "gbuffer",   "light",  "ssr",
+                                                       "ray_list", "hit_shade", "resolve"};
 
 struct FramePipelineSettings {
   ReflectionMode reflections = ReflectionMode::ssr;
   RasterSettings raster;
   SsrSettings ssr;
   ResolveSettings resolve;
+  RayTracingSettings ray_tracing;  // hybrid and rt only
 
   void validate() const;  // throws glint::Error naming the first bad setting
 };
@@ -50,10 +56,18 @@ struct DebugView {
 
 class FramePipeline {
 public:
-  // Uploads `scene` (which must outlive the pipeline, see RasterPipeline) and compiles every pass.
-  // Needs a current GL context.
+  // Uploads `scene` (which must outlive the pipeline, see RasterPipeline), compiles every pass and,
+  // in hybrid and rt modes, builds the ray tracer's structures. Needs a current GL context.
   FramePipeline(const Scene& scene, int width, int height, const FramePipelineSettings& settings = {});
 
+  // After the vertices of `dirty_meshes` moved in the scene (SceneDeformers::apply's list): copies
+  // them to the GPU scene in place.
+  void upload_meshes(std::span<const std::uint32_t> dirty_meshes);
+  // ... and brings the ray tracer's structures up to date by the settings' UpdatePolicy. Returns its
+  // wall time in milliseconds (0 without ray tracing).
+  double update_ray_tracer(std::span<const std::uint32_t> dirty_meshes);
+
+  // In hybrid and rt modes the CPU waits for the ray list in the middle of the frame.
   void render(const FrameState& frame, GpuTimer* timer = nullptr);
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
@@ -61,8 +75,13 @@ public:
   // Reflective and SSR-failed pixels of the last frame; nullopt when reflections are off (SSR did not
   // run, so nothing was counted). Waits for the GPU.
   std::optional<SsrCounts> read_counts() const;
-  // albedo, normals, positions, depth, shadow mask, and with SSR the reflection and failure mask.
-  // Waits for the GPU; see debug_views.h for how each is made viewable.
+  // Rays traced and the trace time of the last frame; nullopt without ray tracing.
+  const std::optional<RayTraceFrameStats>& ray_trace_stats() const { return ray_trace_stats_; }
+  // The ray tracer (hybrid and rt modes), for its build/update statistics; null otherwise.
+  const rt::RayTracer* ray_tracer() const { return ray_traced_ ? &ray_traced_->tracer() : nullptr; }
+  // albedo, normals, positions, depth, shadow mask; with SSR its reflection and failure mask; with ray
+  // tracing the traced reflection; with both the combined reflection. Waits for the GPU; see
+  // debug_views.h for how each is made viewable.
   std::vector<DebugView> read_debug_views() const;
 
   RasterPipeline& raster() { return raster_; }
@@ -72,12 +91,18 @@ public:
   int height() const { return raster_.height(); }
 
 private:
+  GLuint reflection_image() const;  // what resolve reads
+
   const Scene* scene_;
   FramePipelineSettings settings_;
   RasterPipeline raster_;
   std::optional<SsrPass> ssr_;
+  std::optional<RayTracedReflections> ray_traced_;
+  std::optional<RayTraceFrameStats> ray_trace_stats_;
   ResolvePass resolve_;
-  GlTexture no_reflection_;  // all zero: what resolve reads when reflections are off
+  // The reflection image when SSR does not make one: all zero (off), or cleared and filled by the
+  // ray tracer every frame (rt). In hybrid the ray tracer fills SSR's failed pixels instead.
+  GlTexture own_reflection_;
 };
 
 }  // namespace glint::render

@@ -44,6 +44,7 @@ public:
   GLuint shadow_mask() const { return targets_.shadow_mask.id(); }
   GLuint lit() const { return targets_.lit.id(); }
   GLuint shadow_cube_map() const { return shadow_cube_.cube_map(); }
+  const ShadowCubePass& shadow_cube() const { return shadow_cube_; }  // size and far distance too
   GLuint frame_constants_buffer() const { return frame_constants_buffer_.id(); }
   const FrameConstants& frame_constants() const { return frame_constants_; }  // of the last render()
   GpuScene& gpu_scene() { return gpu_scene_; }

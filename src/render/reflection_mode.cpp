@@ -10,6 +10,8 @@ std::string_view reflection_mode_name(ReflectionMode mode) {
   switch (mode) {
     case ReflectionMode::off: return "off";
     case ReflectionMode::ssr: return "ssr";
+    case ReflectionMode::hybrid: return "hybrid";
+    case ReflectionMode::rt: return "rt";
   }
   return "?";
 }
@@ -23,5 +25,9 @@ ReflectionMode parse_reflection_mode(std::string_view name) {
   }
   fail("unknown reflection mode '{}' (known: {})", name, known);
 }
+
+bool uses_ssr(ReflectionMode mode) { return mode == ReflectionMode::ssr || mode == ReflectionMode::hybrid; }
+
+bool uses_ray_tracing(ReflectionMode mode) { return mode == ReflectionMode::hybrid || mode == ReflectionMode::rt; }
 
 }  // namespace glint::render

@@ -36,5 +36,10 @@ inline constexpr GLenum kFinalFormat = GL_RGBA8;
 // Uniform/storage binding points shared by all passes.
 // FrameConstants: kFrameConstantsBinding in frame_constants.h (uniform block 0).
 inline constexpr GLuint kPixelCountersBinding = 0;           // atomic counters: [0] reflective pixels, [1] SSR-failed pixels
+// Storage bindings of the ray-traced complement (ray_hit_buffers.h); 1..5 are the scene's (gpu_scene.h).
+inline constexpr GLuint kRayBinding = 6;          // accel::Ray[]: the ray list
+inline constexpr GLuint kRayPixelBinding = 7;     // uint[]: y * width + x of each ray
+inline constexpr GLuint kHitBinding = 8;          // accel::Hit[]: the ray tracer's answers
+inline constexpr GLuint kRayCounterBinding = 9;   // uint[2]: [0] rays in the list, [1] reflective pixels
 
 }  // namespace glint::render

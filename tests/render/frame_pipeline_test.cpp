@@ -16,28 +16,11 @@ namespace glint::render {
 namespace {
 
 using FramePipelineTest = testing::GlTest;
-using testing::add_material;
-using testing::add_quad;
-using testing::look_at;
+using testing::camera_looking_down_the_floor;
+using testing::mirror_floor_with_wall;
 
 constexpr int kWidth = 96;
 constexpr int kHeight = 64;
-
-// A mirror floor (reflectivity 1, dark grey) and an emissive red wall standing on it at z = `wall_z`,
-// facing +z. The camera at (0, 1.5, 6) looks towards -z, slightly down, so a wall at z = -4 is in
-// view and its mirror image lies on the floor below it; a wall at z = 10 is behind the camera.
-Scene mirror_floor_with_wall(float wall_z) {
-  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 6.0f, 0.0f));
-  const std::uint32_t floor = add_material(scene, vec3(0.1f), 1.0f);
-  const std::uint32_t wall = add_material(scene, vec3(0.0f));
-  scene.materials[wall].emissive = vec3(4.0f, 0.0f, 0.0f);
-  add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
-  // Edges x then y: the normal cross(x, y) = +z faces a camera at larger z.
-  add_quad(scene, vec3(-3.0f, 0.0f, wall_z), vec3(6.0f, 0.0f, 0.0f), vec3(0.0f, 2.0f, 0.0f), wall);
-  return scene;
-}
-
-FrameState camera_looking_down_the_floor() { return look_at(vec3(0.0f, 1.5f, 6.0f), vec3(0.0f, 0.8f, -4.0f), vec3(0.0f, 6.0f, 0.0f)); }
 
 FramePipelineSettings ssr_without_blur() {
   FramePipelineSettings settings;

@@ -107,4 +107,19 @@ bool light_blocked(vec3 point, vec3 light, const std::vector<QuadGeometry>& quad
   return false;
 }
 
+Scene mirror_floor_with_wall(float wall_z) {
+  Scene scene = make_empty_test_scene(vec3(0.0f, 6.0f, 0.0f));
+  const std::uint32_t floor = add_material(scene, vec3(0.1f), 1.0f);
+  const std::uint32_t wall = add_material(scene, vec3(0.0f));
+  scene.materials[wall].emissive = vec3(4.0f, 0.0f, 0.0f);
+  add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
+  // Edges x then y: the normal cross(x, y) = +z faces a camera at larger z.
+  add_quad(scene, vec3(-3.0f, 0.0f, wall_z), vec3(6.0f, 0.0f, 0.0f), vec3(0.0f, 2.0f, 0.0f), wall);
+  return scene;
+}
+
+FrameState camera_looking_down_the_floor() {
+  return look_at(vec3(0.0f, 1.5f, 6.0f), vec3(0.0f, 0.8f, -4.0f), vec3(0.0f, 6.0f, 0.0f));
+}
+
 }  // namespace glint::testing

@@ -1,0 +1,99 @@
+#version 450 core
+// Hit shading (HitShadingPass, docs/hybrid.md): one invocation per listed ray. The hit record
+// {t, instance, prim, u, v} is turned back into a surface point from the GpuScene buffers (the
+// instance's mesh, its triangle `prim`, barycentrics u, v), and shaded exactly like the raster path:
+// the material's albedo times its texture, the light's cube-map shadow at the hit, and
+// surface_radiance() with the reflecting surface as the viewer. The result goes to the ray's pixel
+// of the reflection image as vec4(radiance, distance from the reflecting surface to the hit).
+//
+// Texture level of detail: ray cones (Akenine-Moller et al., "Texture Level of Detail Strategies
+// for Real-Time Ray Tracing", Ray Tracing Gems 2019, ch. 20). A pixel's cone opens by
+// pixel_spread = 2 tan(fov / 2) / height; a planar mirror does not change the spread, so at the
+// hit the cone is pixel_spread * (camera-to-mirror + mirror-to-hit distance) wide, and
+//   lod = log2(width * sqrt(uv area / world area) * texture size / |cos(incidence)|)
+// picks the mip level whose texel matches the cone's footprint on the triangle.
+layout(local_size_x = 64) in;
+
+#include "include/frame_constants.glsl"
+#include "include/scene_buffers.glsl"
+#include "include/surface_lighting.glsl"
+#include "include/cube_shadow.glsl"
+
+struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
+struct Hit { float t; uint instance; uint prim; float u; float v; };    // accel::Hit
+layout(std430, binding = 6) readonly buffer Rays { Ray rays[]; };
+layout(std430, binding = 7) readonly buffer RayPixels { uint ray_pixels[]; };
+layout(std430, binding = 8) readonly buffer Hits { Hit hits[]; };
+
+layout(binding = 0, rgba16f) uniform writeonly image2D reflection;
+layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
+layout(binding = 1) uniform samplerCube shadow_cube;
+
+uniform int ray_count;
+uniform float miss_distance;
+uniform float ambient_fraction;
+uniform float texture_layer_size;
+uniform float far_distance;
+uniform float texel_angle;
+uniform float pcf_radius_texels;
+uniform float constant_bias_texels;
+uniform float slope_bias_texels;
+uniform float normal_offset_texels;
+
+const uint kInvalidIndex = 0xFFFFFFFFu;
+
+float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, float t) {
+  const float world_area = length(cross(e1, e2));
+  const float uv_area = abs(uv1.x * uv2.y - uv1.y * uv2.x);
+  if (world_area <= 0.0 || uv_area <= 0.0) return 0.0;
+  const float pixel_spread = 2.0 / (projection[1][1] * float(viewport.y));
+  const float cone_width = pixel_spread * (distance(camera_position.xyz, ray.origin) + t * length(ray.direction));
+  const float cos_incidence = max(abs(dot(normalize(ray.direction), normal)), 0.05);
+  return log2(max(cone_width * sqrt(uv_area / world_area) * texture_layer_size / cos_incidence, 1e-8));
+}
+
+void main() {
+  const int i = int(gl_GlobalInvocationID.x);
+  if (i >= ray_count) return;
+  const uint pixel_index = ray_pixels[i];
+  const ivec2 pixel = ivec2(int(pixel_index) % viewport.x, int(pixel_index) / viewport.x);
+  const Ray ray = rays[i];
+  const Hit hit = hits[i];
+  if (hit.prim == kInvalidIndex) {
+    imageStore(reflection, pixel, vec4(sky_color.rgb, miss_distance));
+    return;
+  }
+
+  const GpuInstance instance = instances[hit.instance];
+  const GpuMeshRange range = mesh_ranges[instance.mesh];
+  const uint first = range.first_index + 3u * hit.prim;
+  const GpuVertex a = vertices[range.base_vertex + indices[first]];
+  const GpuVertex b = vertices[range.base_vertex + indices[first + 1u]];
+  const GpuVertex c = vertices[range.base_vertex + indices[first + 2u]];
+  const vec3 weights = vec3(1.0 - hit.u - hit.v, hit.u, hit.v);
+
+  const vec3 pa = (instance.model * vec4(a.position_u.xyz, 1.0)).xyz;
+  const vec3 pb = (instance.model * vec4(b.position_u.xyz, 1.0)).xyz;
+  const vec3 pc = (instance.model * vec4(c.position_u.xyz, 1.0)).xyz;
+  const vec3 position = weights.x * pa + weights.y * pb + weights.z * pc;
+  const vec3 object_normal = weights.x * a.normal_v.xyz + weights.y * b.normal_v.xyz + weights.z * c.normal_v.xyz;
+  vec3 normal = mat3(instance.normal_matrix) * object_normal;
+  normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(cross(pb - pa, pc - pa));
+  const vec2 uva = vec2(a.position_u.w, a.normal_v.w), uvb = vec2(b.position_u.w, b.normal_v.w),
+             uvc = vec2(c.position_u.w, c.normal_v.w);
+  const vec2 uv = weights.x * uva + weights.y * uvb + weights.z * uvc;
+
+  const GpuMaterial material = materials[instance.material];
+  vec3 albedo = material.diffuse.rgb;
+  if (material.texture_layer >= 0) {
+    const float lod = texture_lod(pb - pa, pc - pa, uvb - uva, uvc - uva, normal, ray, hit.t);
+    albedo *= textureLod(material_textures, vec3(uv, float(material.texture_layer)), lod).rgb;
+  }
+
+  const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, far_distance, texel_angle,
+      pcf_radius_texels, constant_bias_texels, slope_bias_texels, normal_offset_texels);
+  const float shadow = cube_shadow_visibility(shadow_cube, shadow_settings, position, normal);
+  const vec3 to_viewer = -normalize(ray.direction);
+  const vec3 radiance = surface_radiance(position, normal, to_viewer, albedo, material, shadow, ambient_fraction);
+  imageStore(reflection, pixel, vec4(radiance, hit.t * length(ray.direction)));
+}

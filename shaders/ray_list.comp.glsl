@@ -1,0 +1,64 @@
+#version 450 core
+// Ray list (RayListPass, docs/hybrid.md): compacts the pixels that need a ray-traced reflection into
+// a list of mirror rays. A pixel is listed when it is reflective (geometry with reflectivity > 0) and
+// either trace_all is set (rt mode: every reflective pixel) or SSR marked it failed (hybrid mode).
+//   origin    = G-buffer world position + origin_offset * n
+//   direction = reflect(-v, n), unit length, t in [0, inf)
+// where v is the unit direction to the camera and n the G-buffer normal turned towards the camera.
+// Slots are handed out per work group (one global atomicAdd per group), so the list order varies
+// from run to run but every listed pixel appears exactly once.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std140, binding = 0) uniform FrameConstants {
+  mat4 view; mat4 projection; mat4 view_projection; mat4 inverse_view; mat4 inverse_projection;
+  vec4 camera_position; vec4 light_position_range; vec4 light_color_intensity; vec4 sky_color;
+  vec4 near_far; ivec4 viewport;
+};
+
+layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
+layout(binding = 1, rgba32f) uniform readonly image2D world_position;
+layout(binding = 2, rgba16f) uniform readonly image2D world_normal;
+layout(binding = 3, r8ui) uniform readonly uimage2D failure_mask;
+
+struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
+layout(std430, binding = 6) writeonly buffer Rays { Ray rays[]; };
+layout(std430, binding = 7) writeonly buffer RayPixels { uint ray_pixels[]; };
+layout(std430, binding = 9) buffer RayCounters { uint ray_count; uint reflective_count; };
+
+uniform int trace_all;
+uniform float origin_offset;
+
+shared uint group_rays;
+shared uint group_reflective;
+shared uint group_base;
+
+void main() {
+  if (gl_LocalInvocationIndex == 0u) { group_rays = 0u; group_reflective = 0u; }
+  barrier();
+
+  const ivec2 size = imageSize(world_position);
+  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  bool listed = false;
+  uint slot = 0u;
+  if (all(lessThan(pixel, size))) {
+    const bool reflective = imageLoad(world_position, pixel).w != 0.0 && imageLoad(albedo_reflectivity, pixel).a > 0.0;
+    if (reflective) atomicAdd(group_reflective, 1u);
+    listed = reflective && (trace_all != 0 || imageLoad(failure_mask, pixel).r == 1u);
+    if (listed) slot = atomicAdd(group_rays, 1u);
+  }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u) {
+    group_base = atomicAdd(ray_count, group_rays);
+    atomicAdd(reflective_count, group_reflective);
+  }
+  barrier();
+  if (!listed) return;
+
+  const vec3 position = imageLoad(world_position, pixel).xyz;
+  vec3 n = normalize(imageLoad(world_normal, pixel).xyz);
+  const vec3 v = normalize(camera_position.xyz - position);
+  if (dot(n, v) < 0.0) n = -n;
+  const uint i = group_base + slot;
+  rays[i] = Ray(position + origin_offset * n, 0.0, normalize(reflect(-v, n)), uintBitsToFloat(0x7f800000u));
+  ray_pixels[i] = uint(pixel.y * size.x + pixel.x);
+}

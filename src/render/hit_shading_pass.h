@@ -1,0 +1,52 @@
+#pragma once
+// HitShadingPass: the last step of the ray-traced complement. One compute invocation per listed ray
+// shades its hit record {t, instance, prim, u, v} from the GpuScene buffers alone, with the
+// materials, textures and lighting of the raster path (shaders/include/surface_lighting.glsl) and
+// the shadow of the light's cube map (shaders/include/cube_shadow.glsl, valid at any world
+// position), and stores vec4(radiance, reflected distance) at the ray's pixel of the reflection
+// image, in the format SSR writes (kReflectionFormat), so both go through the same resolve.
+// A miss stores the sky colour at kMissDistance: the sky is infinitely far, so the distance fade
+// removes it unless the fade is off.
+//   inputs:  RayHitBuffers (rays, pixels, hits), GpuScene, shadow cube, FrameConstants UBO
+//   outputs: the given reflection image, at the listed pixels only
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/gpu_scene.h"
+#include "render/ray_hit_buffers.h"
+#include "render/raster_settings.h"
+#include "render/shadow_cube_pass.h"
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+
+namespace glint::render {
+
+// The distance stored for a ray that hit nothing (the largest round number a half float holds).
+inline constexpr float kMissDistance = 60000.0f;
+
+struct HitShadingInputs {
+  const GpuScene* scene = nullptr;
+  const ShadowCubePass* shadow_cube = nullptr;  // the light's cube map of this frame
+  const RasterSettings* raster = nullptr;       // shadow bias, PCF and ambient, as the raster path used
+  GLuint frame_constants = 0;                   // uniform buffer holding FrameConstants
+  GLuint reflection = 0;                        // target: kReflectionFormat, width x height
+};
+
+class HitShadingPass {
+public:
+  // Compiles the shader; throws glint::Error for a non-positive size.
+  HitShadingPass(int width, int height, RayHitBuffers& buffers);
+
+  // Shades rays [0, ray_count) of the buffers (their hits written by the tracer) into
+  // inputs.reflection. Inputs are checked (glint::Error naming the input). Ends with a barrier that
+  // makes the reflection image visible to later image loads, fetches and readbacks.
+  void run(const HitShadingInputs& inputs, std::uint32_t ray_count);
+
+private:
+  ShaderProgram program_;
+  RayHitBuffers* buffers_;
+  int width_, height_;
+};
+
+}  // namespace glint::render

@@ -1,0 +1,58 @@
+#pragma once
+// The buffers through which rays and hit records move between GL and a CPU ray tracer. They are
+// created once, at a capacity of one ray per pixel, with immutable storage and mapped persistently
+// (GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT), so a frame allocates nothing and copies nothing but
+// the two counters:
+//   rays     (kRayBinding):        accel::Ray[capacity]  the ray-list pass writes, the CPU reads
+//   pixels   (kRayPixelBinding):   uint[capacity]        y * width + x of ray i; GPU only
+//   hits     (kHitBinding):        accel::Hit[capacity]  the CPU tracer writes, hit shading reads
+//   counters (kRayCounterBinding): uint[2]               [0] rays in the list, [1] reflective pixels;
+//            GPU atomics in device memory, copied to a mapped readback buffer by finish_ray_list()
+// std430 lays `struct { vec3 origin; float t_min; vec3 direction; float t_max; }` out exactly as
+// accel::Ray (32 bytes) and `struct { float t; uint instance, prim; float u, v; }` as accel::Hit
+// (20 bytes), so the CPU tracer reads and writes the mapped memory in place.
+#include "accel/ray.h"
+#include "gl/gl_objects.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace glint::render {
+
+struct RayListCounts {
+  std::uint32_t rays = 0;        // rays the ray-list pass wrote
+  std::uint32_t reflective = 0;  // reflective pixels it saw (rays == reflective in rt mode)
+};
+
+class RayHitBuffers {
+public:
+  // Needs a current GL context; throws glint::Error for capacity 0.
+  explicit RayHitBuffers(std::size_t capacity);
+
+  // Zeroes the device counters (before the ray-list pass).
+  void reset_counters();
+  // Binds rays, pixels, hits and counters to their storage bindings.
+  void bind() const;
+
+  // After the ray-list pass was issued: makes its writes visible to the CPU, copies the counters to
+  // the readback buffer, waits for the GPU (a fence; glint::Error if it fails or the GPU stalls
+  // for a minute) and returns them. The rays are readable through rays() afterwards.
+  RayListCounts finish_ray_list();
+
+  // The first `count` rays / hits of the mapped buffers; glint::Error beyond the capacity.
+  std::span<const accel::Ray> rays(std::size_t count) const;
+  std::span<accel::Hit> hits(std::size_t count);
+
+  std::size_t capacity() const { return capacity_; }
+  GLuint pixel_buffer() const { return pixels_.id(); }
+
+private:
+  std::size_t capacity_;
+  GlBuffer rays_, pixels_, hits_, counters_, counters_readback_;
+  accel::Ray* mapped_rays_ = nullptr;
+  accel::Hit* mapped_hits_ = nullptr;
+  const std::uint32_t* mapped_counters_ = nullptr;
+};
+
+}  // namespace glint::render

@@ -1,0 +1,73 @@
+#pragma once
+// The ray-traced complement of the hybrid renderer (the paper's Sec. III-C), as three steps around a
+// RayTracer backend:
+//   1. RayListPass (GPU): the pixels that need a ray (SSR-failed, or every reflective one in rt mode)
+//      become a list of mirror rays in persistently mapped memory;
+//   2. the backend (CPU: cpu or embree) traces the list in place into mapped hit records;
+//   3. HitShadingPass (GPU): the hits are shaded like the raster path into the reflection image.
+// Deforming meshes reach the backend through update_meshes() with the chosen UpdatePolicy.
+//
+//   RayTracedReflections traced(scene, 1280, 720, settings);      // builds the structures
+//   traced.update_meshes(scene, dirty);                            // after a deformation
+//   auto stats = traced.run(raster, ssr.failure_mask(), ssr.reflection(), &timer);
+#include "gl/gpu_timer.h"
+#include "render/hit_shading_pass.h"
+#include "render/raster_pipeline.h"
+#include "render/ray_hit_buffers.h"
+#include "render/ray_list_pass.h"
+#include "rt/ray_tracer.h"
+#include "scene/scene.h"
+
+#include <epoxy/gl.h>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace glint::render {
+
+struct RayTracingSettings {
+  std::string backend = "cpu";  // rt::make_ray_tracer name: cpu or embree
+  rt::AccelOptions accel;       // structure of the cpu backend's BLASes, SAH costs, auto threshold
+  rt::UpdatePolicy update = rt::UpdatePolicy::rebuild;
+  // Ray origins move this fraction of the scene's bounding-box diagonal along the surface normal
+  // (enough to leave a flat surface at float precision, far below a visible gap).
+  float origin_offset_fraction = 1e-4f;
+
+  void validate() const;  // glint::Error naming the first bad field (an unknown backend: at construction)
+};
+
+struct RayTraceFrameStats {
+  std::uint32_t rays_traced = 0;        // rays in the list, all traced
+  std::uint32_t reflective_pixels = 0;  // reflective pixels the ray-list pass saw
+  double trace_ms = 0.0;                // the backend's trace_closest, wall clock (CPU)
+};
+
+class RayTracedReflections {
+public:
+  // Builds the backend's structures over `scene` (timed: tracer().stats().build_ms) and creates the
+  // buffers and passes for width x height. Needs a current GL context.
+  RayTracedReflections(const Scene& scene, int width, int height, const RayTracingSettings& settings);
+
+  // After the vertices of `dirty_meshes` moved in `scene`: brings the backend's structures up to
+  // date by the settings' policy. Returns the wall time in milliseconds.
+  double update_meshes(const Scene& scene, std::span<const std::uint32_t> dirty_meshes);
+
+  // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
+  // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GPU steps
+  // are timed as "ray_list" and "hit_shade"; the CPU waits for the ray list in between.
+  RayTraceFrameStats run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer);
+
+  const rt::RayTracer& tracer() const { return *tracer_; }
+  const RayTracingSettings& settings() const { return settings_; }
+
+private:
+  RayTracingSettings settings_;
+  std::unique_ptr<rt::RayTracer> tracer_;
+  RayHitBuffers buffers_;
+  RayListPass ray_list_;
+  HitShadingPass hit_shading_;
+};
+
+}  // namespace glint::render

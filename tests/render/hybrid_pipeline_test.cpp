@@ -1,0 +1,188 @@
+// The ray-traced complement inside the whole frame (raster, SSR, ray list, trace, hit shading,
+// resolve) on scenes built in code and on the atrium: which pixels get rays, that hybrid leaves SSR's
+// pixels alone, that rays find what screen space cannot, and that the choice of backend and update
+// policy does not change the image.
+#include "metrics/rmse_psnr.h"
+#include "metrics/ssim.h"
+#include "render/frame_pipeline.h"
+#include "raster_test_scene.h"
+#include "scene/presets.h"
+#include "scene/sine_deformer.h"
+#include "../gl/gl_test_context.h"
+
+#include <gtest/gtest.h>
+
+namespace glint::render {
+namespace {
+
+using HybridPipelineTest = testing::GlTest;
+using testing::camera_looking_down_the_floor;
+using testing::mirror_floor_with_wall;
+
+constexpr int kWidth = 96;
+constexpr int kHeight = 64;
+
+// No blur, no fade, no tone curve: a pixel's final colour depends on its own reflection only.
+FramePipelineSettings unfiltered(ReflectionMode mode) {
+  FramePipelineSettings settings;
+  settings.reflections = mode;
+  settings.resolve.blur_radius = 0;
+  settings.resolve.fade_end = 0.0f;
+  settings.resolve.tone_map = ToneMap::none;
+  return settings;
+}
+
+struct RenderedFrame {
+  ImageRgba8 image;
+  std::optional<SsrCounts> ssr_counts;
+  std::optional<RayTraceFrameStats> ray_stats;
+  std::vector<std::uint8_t> failed;  // failure mask per pixel (top row first); empty without SSR
+};
+
+RenderedFrame render_frame(const Scene& scene, const FramePipelineSettings& settings, const FrameState& frame,
+                           int width = kWidth, int height = kHeight) {
+  FramePipeline pipeline(scene, width, height, settings);
+  pipeline.render(frame);
+  RenderedFrame result{pipeline.read_final(), pipeline.read_counts(), pipeline.ray_trace_stats(), {}};
+  for (const DebugView& view : pipeline.read_debug_views())
+    if (view.name == "failure_mask")
+      for (const auto& p : view.image.pixels) result.failed.push_back(p.x > 127 ? 1 : 0);
+  return result;
+}
+
+int count_red(const ImageRgba8& image) {
+  int red = 0;
+  for (const auto& p : image.pixels) red += p.x > 100 && p.y < 40 && p.z < 40;
+  return red;
+}
+
+TEST_F(HybridPipelineTest, RaysAreTracedForExactlyTheFailedPixels) {
+  const Scene scene = mirror_floor_with_wall(-4.0f);
+  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), camera_looking_down_the_floor());
+  ASSERT_TRUE(hybrid.ssr_counts && hybrid.ray_stats);
+  int mask_sum = 0;
+  for (const std::uint8_t failed : hybrid.failed) mask_sum += failed;
+  EXPECT_GT(mask_sum, 0) << "the sky beyond the wall is not on screen as a reflection";
+  EXPECT_EQ(hybrid.ray_stats->rays_traced, static_cast<std::uint32_t>(mask_sum));
+  EXPECT_EQ(hybrid.ray_stats->rays_traced, hybrid.ssr_counts->failed);
+  EXPECT_EQ(hybrid.ray_stats->reflective_pixels, hybrid.ssr_counts->reflective);
+}
+
+TEST_F(HybridPipelineTest, HybridKeepsEverySsrPixelExactly) {
+  const Scene scene = mirror_floor_with_wall(-4.0f);
+  const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), camera_looking_down_the_floor());
+  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), camera_looking_down_the_floor());
+  ASSERT_EQ(ssr.failed, hybrid.failed) << "SSR is deterministic: both runs fail on the same pixels";
+  int compared = 0, traced_differ = 0;
+  for (std::size_t i = 0; i < ssr.image.pixels.size(); ++i) {
+    if (ssr.failed[i] == 0) {
+      ASSERT_EQ(ssr.image.pixels[i], hybrid.image.pixels[i]) << "pixel " << i << " did not fail SSR";
+      ++compared;
+    } else {
+      traced_differ += ssr.image.pixels[i] != hybrid.image.pixels[i];
+    }
+  }
+  EXPECT_GT(compared, kWidth * kHeight / 2);
+  EXPECT_GT(traced_differ, 0) << "traced pixels receive a reflection SSR did not give them";
+}
+
+// A strip of mirror floor in the middle of the view, ending before a wide lit wall that fills the
+// view beyond it: every reflected ray meets the wall well inside the screen, so SSR finds them all.
+Scene mirror_strip_before_wall() {
+  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 2.0f));
+  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
+  const std::uint32_t wall = testing::add_material(scene, vec3(0.8f, 0.6f, 0.3f));
+  testing::add_quad(scene, vec3(-0.5f, 0.0f, 4.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -6.0f), floor);
+  testing::add_quad(scene, vec3(-50.0f, -1.0f, -4.0f), vec3(100.0f, 0.0f, 0.0f), vec3(0.0f, 50.0f, 0.0f), wall);
+  return scene;
+}
+
+TEST_F(HybridPipelineTest, WithoutSsrFailuresHybridEqualsSsr) {
+  const Scene scene = mirror_strip_before_wall();
+  const FrameState frame = testing::look_at(vec3(0.0f, 1.0f, 6.0f), vec3(0.0f, 1.0f, -4.0f), vec3(0.0f, 3.0f, 2.0f));
+  const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), frame);
+  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), frame);
+  ASSERT_TRUE(ssr.ssr_counts && hybrid.ray_stats);
+  ASSERT_GT(ssr.ssr_counts->reflective, 100u);
+  ASSERT_EQ(ssr.ssr_counts->failed, 0u) << "the scene is meant to have no SSR failure";
+  EXPECT_EQ(hybrid.ray_stats->rays_traced, 0u);
+  EXPECT_EQ(ssr.image.pixels, hybrid.image.pixels);
+}
+
+TEST_F(HybridPipelineTest, WallBehindTheCameraAppearsInHybridAndRtButNotSsr) {
+  const Scene scene = mirror_floor_with_wall(10.0f);
+  const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), camera_looking_down_the_floor());
+  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), camera_looking_down_the_floor());
+  const RenderedFrame rt = render_frame(scene, unfiltered(ReflectionMode::rt), camera_looking_down_the_floor());
+  EXPECT_EQ(count_red(ssr.image), 0);
+  EXPECT_GT(count_red(hybrid.image), 100) << "the floor reflects the wall behind the camera";
+  EXPECT_GT(count_red(rt.image), 100);
+  // Every reflective pixel fails SSR here, so hybrid traces the same rays as rt: same image.
+  ASSERT_TRUE(hybrid.ssr_counts && rt.ray_stats);
+  EXPECT_EQ(hybrid.ssr_counts->failed, hybrid.ssr_counts->reflective);
+  EXPECT_EQ(rt.ray_stats->rays_traced, hybrid.ssr_counts->reflective) << "rt traces every reflective pixel";
+  EXPECT_EQ(hybrid.image.pixels, rt.image.pixels);
+}
+
+// The atrium at a small size, both dinosaurs posed at `frame`.
+struct AtriumFrame {
+  Scene scene = make_preset("atrium");
+  FrameState frame;
+  explicit AtriumFrame(int frame_number) {
+    SceneDeformers(scene).apply(scene, frame_number);
+    frame = WalkthroughAnimation(scene).at(frame_number);
+  }
+};
+
+TEST_F(HybridPipelineTest, HybridIsCloserToRtThanSsrOnTheAtrium) {
+  const AtriumFrame atrium(2100);
+  FramePipelineSettings settings;  // the defaults: blur, fade and tone map as users get them
+  const auto render_mode = [&](ReflectionMode mode) {
+    settings.reflections = mode;
+    return render_frame(atrium.scene, settings, atrium.frame, 192, 108).image;
+  };
+  const ImageRgba8 rt = render_mode(ReflectionMode::rt);
+  const double ssr_ssim = metrics::colour_ssim(render_mode(ReflectionMode::ssr), rt).luma;
+  const double hybrid_ssim = metrics::colour_ssim(render_mode(ReflectionMode::hybrid), rt).luma;
+  EXPECT_GT(hybrid_ssim, ssr_ssim) << "rays fill in what SSR missed";
+  EXPECT_GT(hybrid_ssim, 0.9);
+}
+
+// Renders the atrium at frame 2100 after the dinosaurs moved from their frame-2000 pose, the ray
+// tracer updated by `policy`.
+ImageRgba8 deformed_atrium(const std::string& backend, rt::UpdatePolicy policy, bool update_tracer = true) {
+  AtriumFrame atrium(2000);
+  FramePipelineSettings settings = unfiltered(ReflectionMode::rt);
+  settings.ray_tracing.backend = backend;
+  settings.ray_tracing.update = policy;
+  FramePipeline pipeline(atrium.scene, 160, 90, settings);
+  const std::vector<std::uint32_t> dirty = SceneDeformers(atrium.scene).apply(atrium.scene, 2100);
+  EXPECT_FALSE(dirty.empty());
+  pipeline.upload_meshes(dirty);
+  if (update_tracer) pipeline.update_ray_tracer(dirty);
+  pipeline.render(WalkthroughAnimation(atrium.scene).at(2100));
+  return pipeline.read_final();
+}
+
+TEST_F(HybridPipelineTest, RefitAndRebuildGiveTheSameImage) {
+  const ImageRgba8 rebuilt = deformed_atrium("cpu", rt::UpdatePolicy::rebuild);
+  const ImageRgba8 refitted = deformed_atrium("cpu", rt::UpdatePolicy::refit);
+  EXPECT_GE(metrics::rmse_psnr(refitted, rebuilt).psnr, 50.0);
+}
+
+TEST_F(HybridPipelineTest, TheTracerFollowsTheDeformation) {
+  const ImageRgba8 updated = deformed_atrium("cpu", rt::UpdatePolicy::refit);
+  const ImageRgba8 stale = deformed_atrium("cpu", rt::UpdatePolicy::refit, /*update_tracer=*/false);
+  int differing = 0;
+  for (std::size_t i = 0; i < updated.pixels.size(); ++i) differing += updated.pixels[i] != stale.pixels[i];
+  EXPECT_GT(differing, 0) << "reflections traced against the old pose differ from the new pose's";
+}
+
+TEST_F(HybridPipelineTest, CpuAndEmbreeBackendsGiveTheSameImage) {
+  const ImageRgba8 cpu = deformed_atrium("cpu", rt::UpdatePolicy::refit);
+  const ImageRgba8 embree = deformed_atrium("embree", rt::UpdatePolicy::refit);
+  EXPECT_GE(metrics::rmse_psnr(embree, cpu).psnr, 50.0);
+}
+
+}  // namespace
+}  // namespace glint::render
