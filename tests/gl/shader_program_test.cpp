@@ -173,6 +173,10 @@ TEST_F(GlShaderProgram, SharedIncludesCompileTogetherInAComputeShader) {
   check_gl("compute shader with every shared include");
 }
 
+ShaderStageSource fullscreen_vertex() {
+  return {GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl", shader_source("fullscreen.vert.glsl")};
+}
+
 TEST_F(GlShaderProgram, ErrorInAnIncludedFileNamesThatFileAndLine) {
   const std::map<std::string, std::string, std::less<>> files = {
       {"include/fine.glsl", "// fine\nfloat fine() { return 1.0; }\n"},
@@ -196,7 +200,7 @@ TEST_F(GlShaderProgram, ErrorInAnIncludedFileNamesThatFileAndLine) {
       "void main() { c = vec4(broken()); }\n";
   const ExpandedShaderSource expanded = expand_shader_includes("uses_broken.frag.glsl", top, lookup, "shaders/");
   const std::string message = error_of([&] {
-    ShaderProgram::from_sources({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl", shader_source("fullscreen.vert.glsl")},
+    ShaderProgram::from_sources({fullscreen_vertex(),
                                  {GL_FRAGMENT_SHADER, "shaders/uses_broken.frag.glsl", expanded.text, expanded.files}});
   });
   EXPECT_EQ(message.rfind("shaders/include/broken.glsl:4: GLSL compile error\n", 0), 0u) << message;
@@ -208,10 +212,11 @@ TEST_F(GlShaderProgram, ErrorInAnIncludedFileNamesThatFileAndLine) {
       "#include \"include/fine.glsl\"\n"
       "layout(location = 0) out vec4 c;\n"
       "void main() { c = vec4(fine()) * ; }\n";  // line 4
-  const ExpandedShaderSource expanded_top = expand_shader_includes("top_error.frag.glsl", top_error, lookup, "shaders/");
+  const ExpandedShaderSource expanded_top =
+      expand_shader_includes("top_error.frag.glsl", top_error, lookup, "shaders/");
   const std::string top_message = error_of([&] {
-    ShaderProgram::from_sources({{GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl", shader_source("fullscreen.vert.glsl")},
-                                 {GL_FRAGMENT_SHADER, "shaders/top_error.frag.glsl", expanded_top.text, expanded_top.files}});
+    ShaderProgram::from_sources(
+        {fullscreen_vertex(), {GL_FRAGMENT_SHADER, "shaders/top_error.frag.glsl", expanded_top.text, expanded_top.files}});
   });
   EXPECT_EQ(top_message.rfind("shaders/top_error.frag.glsl:4: GLSL compile error\n", 0), 0u) << top_message;
 }
