@@ -1,7 +1,10 @@
-# Embeds every shaders/*.glsl into the glint library so the binary runs without the source tree.
-# At build time cmake/GlintShaders.cmake (this file, run in script mode with -P) writes one C++
-# file holding one raw-string constant per shader plus a name -> source table; src/gl/shader_source.cpp
-# looks names up in that table. Editing a shader re-embeds it; adding one re-globs (CONFIGURE_DEPENDS).
+# Embeds every shaders/**/*.glsl (shaders/include/ too) into the glint library so the binary runs
+# without the source tree. At build time cmake/GlintShaders.cmake (this file, run in script mode with
+# -P) writes one C++ file holding one raw-string constant per shader plus a name -> source table;
+# src/gl/embedded_shaders.cpp looks names up in that table, for pass shaders and for #include lines
+# alike (names relative to shaders/, e.g. "include/frame_constants.glsl"). Files are embedded as
+# written: includes are expanded when a program is built (src/gl/shader_includes.h). Editing a shader
+# re-embeds it; adding one re-globs (CONFIGURE_DEPENDS).
 
 if(CMAKE_SCRIPT_MODE_FILE)
   # ---- script mode: GLINT_SHADER_DIR, GLINT_SHADER_OUTPUT are passed with -D ----

@@ -3,11 +3,7 @@
 // material id + 1 (formats in src/render/render_targets.h). The normal is the interpolated vertex
 // normal as authored, never flipped towards the viewer.
 
-struct GpuMaterial {
-  vec4 diffuse; vec4 specular_exponent; vec4 emissive;
-  float reflectivity; float roughness; int texture_layer; int pad;
-};
-layout(std430, binding = 5) readonly buffer Materials { GpuMaterial materials[]; };
+#include "include/scene_materials.glsl"
 layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
 
 in vec3 world_position;

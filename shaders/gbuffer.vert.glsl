@@ -2,14 +2,9 @@
 // G-buffer geometry: transforms one instance's vertices to world and clip space. The instance index
 // arrives as a per-instance attribute (GpuScene sets baseInstance = instance index per draw).
 
-layout(std140, binding = 0) uniform FrameConstants {
-  mat4 view; mat4 projection; mat4 view_projection; mat4 inverse_view; mat4 inverse_projection;
-  vec4 camera_position; vec4 light_position_range; vec4 light_color_intensity; vec4 sky_color;
-  vec4 near_far; ivec4 viewport;
-};
+#include "include/frame_constants.glsl"
 
-struct GpuInstance { mat4 model; mat4 normal_matrix; uint mesh; uint material; uint pad0; uint pad1; };
-layout(std430, binding = 4) readonly buffer Instances { GpuInstance instances[]; };
+#include "include/scene_instances.glsl"
 
 layout(location = 0) in vec4 position_u;
 layout(location = 1) in vec4 normal_v;

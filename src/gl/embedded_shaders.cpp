@@ -6,9 +6,14 @@
 
 namespace glint {
 
-std::string_view shader_source(std::string_view name) {
+std::optional<std::string_view> find_embedded_shader(std::string_view name) {
   for (std::size_t i = 0; i < kEmbeddedShaderCount; ++i)
     if (kEmbeddedShaders[i].name == name) return kEmbeddedShaders[i].source;
+  return std::nullopt;
+}
+
+std::string_view shader_source(std::string_view name) {
+  if (const auto source = find_embedded_shader(name)) return *source;
   fail("unknown shader '{}': not among the shaders embedded from shaders/ ({}); "
        "a new shaders/*.glsl file needs a rebuild to be embedded",
        name, fmt::join(embedded_shader_names(), ", "));

@@ -3,6 +3,7 @@
 // glint runs from any folder without the source tree. Shaders are looked up by file name relative to
 // shaders/, e.g. shader_source("fullscreen.vert.glsl").
 #include <cstddef>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +20,10 @@ extern const std::size_t kEmbeddedShaderCount;
 
 // The source of an embedded shader; an unknown name is a glint::Error listing the known ones.
 std::string_view shader_source(std::string_view name);
+
+// The source of an embedded shader, or nullopt for an unknown name (the lookup that #include
+// expansion uses for embedded shaders: see shader_includes.h).
+std::optional<std::string_view> find_embedded_shader(std::string_view name);
 
 // Names of all embedded shaders, sorted.
 std::vector<std::string_view> embedded_shader_names();

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gl/embedded_shaders.h"
+#include "gl/shader_includes.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -48,8 +49,20 @@ GlShader compile_stage(const ShaderStageSource& stage) {
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
   if (ok == GL_TRUE) return shader;
   const std::string log = shader_info_log(shader.id());
-  if (const auto line = parse_glsl_error_line(log)) fail("{}:{}: GLSL compile error\n{}", stage.name, *line, log);
-  fail("{}: GLSL compile error (the driver's log names no line)\n{}", stage.name, log);
+  // With includes, the log's line numbers belong to the file of their source-string number; a
+  // legend under the log says which file each number is, for the errors after the first.
+  std::string legend;
+  if (stage.source_files.size() > 1) {
+    legend = "\nsource-string numbers in this log:";
+    for (std::size_t i = 0; i < stage.source_files.size(); ++i)
+      legend.append(fmt::format("{} {} = {}", i == 0 ? "" : ",", i, stage.source_files[i]));
+  }
+  if (const auto where = parse_glsl_error_location(log)) {
+    const auto number = static_cast<std::size_t>(where->source_string);
+    const std::string& file = number < stage.source_files.size() ? stage.source_files[number] : stage.name;
+    fail("{}:{}: GLSL compile error\n{}{}", file, where->line, log, legend);
+  }
+  fail("{}: GLSL compile error (the driver's log names no line)\n{}{}", stage.name, log, legend);
 }
 
 // Lines of `text` that contain "error" in any case, or all lines when none does.
@@ -83,16 +96,22 @@ GLenum shader_stage_from_name(std::string_view name) {
        name);
 }
 
-std::optional<int> parse_glsl_error_line(std::string_view info_log) {
-  // The first number is the source-string index (always 0: one string per shader), the second the line.
-  static const std::regex mesa(R"((?:^|[^0-9])\d+:(\d+)\(\d+\):)");     // 0:12(3): error: ...
-  static const std::regex nvidia(R"((?:^|[^0-9])\d+\((\d+)\)\s*:)");    // 0(12) : error C0000: ...
-  static const std::regex amd(R"((?:^|[^0-9])\d+:(\d+):)");             // ERROR: 0:12: ...
+std::optional<GlslErrorLocation> parse_glsl_error_location(std::string_view info_log) {
+  // The first number is the source-string number (0 unless #line set another), the second the line.
+  static const std::regex mesa(R"((?:^|[^0-9])(\d+):(\d+)\(\d+\):)");     // 0:12(3): error: ...
+  static const std::regex nvidia(R"((?:^|[^0-9])(\d+)\((\d+)\)\s*:)");    // 0(12) : error C0000: ...
+  static const std::regex amd(R"((?:^|[^0-9])(\d+):(\d+):)");             // ERROR: 0:12: ...
   for (const std::string_view line : error_lines_first(info_log)) {
     std::match_results<std::string_view::const_iterator> match;
     for (const std::regex* pattern : {&mesa, &nvidia, &amd})
-      if (std::regex_search(line.begin(), line.end(), match, *pattern)) return std::stoi(match[1].str());
+      if (std::regex_search(line.begin(), line.end(), match, *pattern))
+        return GlslErrorLocation{std::stoi(match[1].str()), std::stoi(match[2].str())};
   }
+  return std::nullopt;
+}
+
+std::optional<int> parse_glsl_error_line(std::string_view info_log) {
+  if (const auto where = parse_glsl_error_location(info_log)) return where->line;
   return std::nullopt;
 }
 
@@ -118,9 +137,18 @@ ShaderProgram ShaderProgram::from_sources(const std::vector<ShaderStageSource>& 
 }
 
 ShaderProgram ShaderProgram::from_embedded(std::initializer_list<std::string_view> names) {
-  std::vector<ShaderStageSource> stages;
+  // Include names are looked up among the embedded shaders too; an unknown one is reported by the
+  // expander, naming the including file and line.
+  std::vector<ExpandedShaderSource> expanded;  // owns the text the stages view
+  expanded.reserve(names.size());
   for (const std::string_view file : names)
-    stages.push_back({shader_stage_from_name(file), fmt::format("shaders/{}", file), shader_source(file)});
+    expanded.push_back(expand_shader_includes(file, shader_source(file), find_embedded_shader, "shaders/"));
+  std::vector<ShaderStageSource> stages;
+  auto source = expanded.begin();
+  for (const std::string_view file : names) {
+    stages.push_back({shader_stage_from_name(file), fmt::format("shaders/{}", file), source->text, source->files});
+    ++source;
+  }
   return from_sources(stages);
 }
 

@@ -1,5 +1,6 @@
 #include "gl/embedded_shaders.h"
 #include "gl/gl_check.h"
+#include "gl/shader_includes.h"
 #include "gl/shader_program.h"
 #include "gl_test_context.h"
 
@@ -10,6 +11,7 @@
 #include "support/test_paths.h"
 
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -103,6 +105,128 @@ TEST_F(GlShaderProgram, EmbeddedProgramLinksAndFindsItsUniform) {
   program.set_uniform("color", vec4(1.0f));
   program.set_uniform("not_a_uniform", 1.0f);  // location -1: ignored by GL, not an error
   check_gl("uniforms");
+}
+
+TEST(GlShaderLog, FindsTheSourceStringNumber) {
+  const auto mesa = parse_glsl_error_location("2:12(3): error: syntax error\n");
+  ASSERT_TRUE(mesa);
+  EXPECT_EQ(mesa->source_string, 2);
+  EXPECT_EQ(mesa->line, 12);
+  const auto nvidia = parse_glsl_error_location("3(7) : error C0000: syntax error\n");
+  ASSERT_TRUE(nvidia);
+  EXPECT_EQ(nvidia->source_string, 3);
+  EXPECT_EQ(nvidia->line, 7);
+  const auto amd = parse_glsl_error_location("ERROR: 1:42: 'x' : undeclared identifier\n");
+  ASSERT_TRUE(amd);
+  EXPECT_EQ(amd->source_string, 1);
+  EXPECT_EQ(amd->line, 42);
+}
+
+TEST_F(GlShaderProgram, EveryEmbeddedPassWithIncludesCompilesAndLinks) {
+  // The pass shaders that include shaders/include/*.glsl, in the stage combinations the passes use.
+  ShaderProgram lighting = ShaderProgram::from_embedded({"fullscreen.vert.glsl", "lighting.frag.glsl"});
+  EXPECT_GE(lighting.uniform_location("ambient_fraction"), 0);
+  ShaderProgram mask = ShaderProgram::from_embedded({"fullscreen.vert.glsl", "shadow_mask.frag.glsl"});
+  for (const char* uniform : {"far_distance", "texel_angle", "pcf_radius_texels", "constant_bias_texels",
+                              "slope_bias_texels", "normal_offset_texels"})
+    EXPECT_GE(mask.uniform_location(uniform), 0) << uniform;
+  ShaderProgram gbuffer = ShaderProgram::from_embedded({"gbuffer.vert.glsl", "gbuffer.frag.glsl"});
+  EXPECT_NE(gbuffer.id(), 0u);
+  ShaderProgram cube =
+      ShaderProgram::from_embedded({"shadow_cube.vert.glsl", "shadow_cube.geom.glsl", "shadow_cube.frag.glsl"});
+  EXPECT_GE(cube.uniform_location("inverse_far_distance"), 0);
+  ShaderProgram ssr = ShaderProgram::from_embedded({"ssr.comp.glsl"});
+  EXPECT_GE(ssr.uniform_location("max_steps"), 0);
+  check_gl("programs with includes");
+}
+
+// A compute shader like the coming hit-shading pass: every scene buffer, the surface lighting and
+// the cube-map shadow at arbitrary points, with its own sampler binding; all must compile together.
+TEST_F(GlShaderProgram, SharedIncludesCompileTogetherInAComputeShader) {
+  const std::string source =
+      "#version 450 core\n"
+      "layout(local_size_x = 64) in;\n"
+      "#include \"include/scene_buffers.glsl\"\n"
+      "#include \"include/frame_constants.glsl\"\n"
+      "#include \"include/surface_lighting.glsl\"\n"
+      "#include \"include/cube_shadow.glsl\"\n"
+      "layout(binding = 3) uniform samplerCube hit_shadow_cube;\n"
+      "layout(std430, binding = 6) writeonly buffer Out { vec4 radiance[]; };\n"
+      "void main() {\n"
+      "  uint i = gl_GlobalInvocationID.x;\n"
+      "  GpuInstance instance = instances[i];\n"
+      "  GpuMeshRange range = mesh_ranges[instance.mesh];\n"
+      "  GpuVertex v = vertices[range.base_vertex + indices[range.first_index]];\n"
+      "  vec3 p = (instance.model * vec4(v.position_u.xyz, 1.0)).xyz;\n"
+      "  vec3 n = normalize(mat3(instance.normal_matrix) * v.normal_v.xyz);\n"
+      "  CubeShadowSettings s = CubeShadowSettings(light_position_range.xyz, 10.0, 0.01, 1.0, 1.0, 1.0, 1.0);\n"
+      "  float shadow = cube_shadow_visibility(hit_shadow_cube, s, p, n);\n"
+      "  GpuMaterial m = materials[instance.material];\n"
+      "  radiance[i] = vec4(surface_radiance(p, n, normalize(camera_position.xyz - p), m.diffuse.rgb, m,\n"
+      "                                      shadow, 0.1), 1.0);\n"
+      "}\n";
+  const ExpandedShaderSource expanded =
+      expand_shader_includes("hit_test.comp.glsl", source, find_embedded_shader, "shaders/");
+  ShaderProgram program =
+      ShaderProgram::from_sources({{GL_COMPUTE_SHADER, "shaders/hit_test.comp.glsl", expanded.text, expanded.files}});
+  EXPECT_NE(program.id(), 0u);
+  check_gl("compute shader with every shared include");
+}
+
+ShaderStageSource fullscreen_vertex() {
+  return {GL_VERTEX_SHADER, "shaders/fullscreen.vert.glsl", shader_source("fullscreen.vert.glsl")};
+}
+
+TEST_F(GlShaderProgram, ErrorInAnIncludedFileNamesThatFileAndLine) {
+  const std::map<std::string, std::string, std::less<>> files = {
+      {"include/fine.glsl", "// fine\nfloat fine() { return 1.0; }\n"},
+      {"include/broken.glsl",
+       "// 1\n"
+       "#include \"include/fine.glsl\"\n"  // 2
+       "float broken() {\n"                 // 3
+       "  return fine() * ;\n"              // 4: the error
+       "}\n"},
+  };
+  const ShaderIncludeLookup lookup = [&](std::string_view name) -> std::optional<std::string_view> {
+    const auto found = files.find(name);
+    if (found == files.end()) return std::nullopt;
+    return std::string_view(found->second);
+  };
+  const std::string top =
+      "#version 450 core\n"
+      "#include \"include/fine.glsl\"\n"
+      "#include \"include/broken.glsl\"\n"
+      "layout(location = 0) out vec4 c;\n"
+      "void main() { c = vec4(broken()); }\n";
+  const ExpandedShaderSource expanded = expand_shader_includes("uses_broken.frag.glsl", top, lookup, "shaders/");
+  const std::string message = error_of([&] {
+    ShaderProgram::from_sources({fullscreen_vertex(),
+                                 {GL_FRAGMENT_SHADER, "shaders/uses_broken.frag.glsl", expanded.text, expanded.files}});
+  });
+  EXPECT_EQ(message.rfind("shaders/include/broken.glsl:4: GLSL compile error\n", 0), 0u) << message;
+  EXPECT_NE(message.find("2 = shaders/include/broken.glsl"), std::string::npos) << message;
+
+  // An error after the include, in the top file, keeps the top file's own line numbers.
+  const std::string top_error =
+      "#version 450 core\n"
+      "#include \"include/fine.glsl\"\n"
+      "layout(location = 0) out vec4 c;\n"
+      "void main() { c = vec4(fine()) * ; }\n";  // line 4
+  const ExpandedShaderSource expanded_top =
+      expand_shader_includes("top_error.frag.glsl", top_error, lookup, "shaders/");
+  const std::string top_message = error_of([&] {
+    ShaderProgram::from_sources(
+        {fullscreen_vertex(), {GL_FRAGMENT_SHADER, "shaders/top_error.frag.glsl", expanded_top.text, expanded_top.files}});
+  });
+  EXPECT_EQ(top_message.rfind("shaders/top_error.frag.glsl:4: GLSL compile error\n", 0), 0u) << top_message;
+}
+
+TEST(GlEmbeddedShaders, EveryPassShaderExpandsItsIncludes) {
+  // Every embedded pass shader expands: no include names a file that is not embedded.
+  for (const std::string_view name : embedded_shader_names()) {
+    if (name.substr(0, 8) == "include/") continue;
+    EXPECT_NO_THROW(expand_shader_includes(name, shader_source(name), find_embedded_shader, "shaders/")) << name;
+  }
 }
 
 TEST_F(GlShaderProgram, MovedFromProgramOwnsNothing) {
