@@ -11,7 +11,9 @@
 // pixel_spread = 2 tan(fov / 2) / height; a planar mirror does not change the spread, so at the
 // hit the cone is pixel_spread * (camera-to-mirror + mirror-to-hit distance) wide, and
 //   lod = log2(width * sqrt(uv area / world area) * texture size / |cos(incidence)|)
-// picks the mip level whose texel matches the cone's footprint on the triangle.
+// picks the mip level whose texel matches the cone's footprint on the triangle. The texture is
+// filtered here (trilinear, repeat wrapping, from texelFetch) rather than by textureLod: Mesa's
+// llvmpipe takes ~1 ms per filtered array sample in a compute shader, texelFetch is fast everywhere.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
@@ -41,6 +43,33 @@ uniform float slope_bias_texels;
 uniform float normal_offset_texels;
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
+
+// Bilinear sample of mip `level` of texture array layer `layer` at `uv`, wrapping (GL_REPEAT).
+vec3 bilinear_texel(int layer, vec2 uv, int level) {
+  const ivec2 size = textureSize(material_textures, level).xy;
+  const vec2 position = uv * vec2(size) - 0.5;
+  const ivec2 base = ivec2(floor(position));
+  const vec2 f = position - vec2(base);
+  vec3 row[2];
+  for (int dy = 0; dy < 2; ++dy) {
+    const int y = ((base.y + dy) % size.y + size.y) % size.y;
+    const vec3 left = texelFetch(material_textures, ivec3((base.x % size.x + size.x) % size.x, y, layer), level).rgb;
+    const vec3 right = texelFetch(material_textures, ivec3(((base.x + 1) % size.x + size.x) % size.x, y, layer), level).rgb;
+    row[dy] = mix(left, right, f.x);
+  }
+  return mix(row[0], row[1], f.y);
+}
+
+// Trilinear: the two mip levels around `lod`, blended.
+vec3 trilinear_texel(int layer, vec2 uv, float lod) {
+  const float top = float(textureQueryLevels(material_textures) - 1);
+  const float clamped = clamp(lod, 0.0, top);
+  const int lower = int(floor(clamped));
+  const float blend = clamped - float(lower);
+  const vec3 a = bilinear_texel(layer, uv, lower);
+  if (blend <= 0.0) return a;
+  return mix(a, bilinear_texel(layer, uv, min(lower + 1, int(top))), blend);
+}
 
 float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, float t) {
   const float world_area = length(cross(e1, e2));
@@ -87,7 +116,7 @@ void main() {
   vec3 albedo = material.diffuse.rgb;
   if (material.texture_layer >= 0) {
     const float lod = texture_lod(pb - pa, pc - pa, uvb - uva, uvc - uva, normal, ray, hit.t);
-    albedo *= textureLod(material_textures, vec3(uv, float(material.texture_layer)), lod).rgb;
+    albedo *= trilinear_texel(material.texture_layer, uv, lod);
   }
 
   const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, far_distance, texel_angle,

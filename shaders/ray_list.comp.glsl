@@ -9,11 +9,7 @@
 // from run to run but every listed pixel appears exactly once.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std140, binding = 0) uniform FrameConstants {
-  mat4 view; mat4 projection; mat4 view_projection; mat4 inverse_view; mat4 inverse_projection;
-  vec4 camera_position; vec4 light_position_range; vec4 light_color_intensity; vec4 sky_color;
-  vec4 near_far; ivec4 viewport;
-};
+#include "include/frame_constants.glsl"
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;

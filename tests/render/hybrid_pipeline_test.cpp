@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace glint::render {
 namespace {
 
@@ -50,9 +52,10 @@ RenderedFrame render_frame(const Scene& scene, const FramePipelineSettings& sett
   return result;
 }
 
+// Pixels clearly redder than grey: the emissive red surfaces' colour added to a grey floor.
 int count_red(const ImageRgba8& image) {
   int red = 0;
-  for (const auto& p : image.pixels) red += p.x > 100 && p.y < 40 && p.z < 40;
+  for (const auto& p : image.pixels) red += p.x > 150 && p.x > p.y + 80 && p.x > p.z + 80;
   return red;
 }
 
@@ -109,14 +112,36 @@ TEST_F(HybridPipelineTest, WithoutSsrFailuresHybridEqualsSsr) {
   EXPECT_EQ(ssr.image.pixels, hybrid.image.pixels);
 }
 
-TEST_F(HybridPipelineTest, WallBehindTheCameraAppearsInHybridAndRtButNotSsr) {
-  const Scene scene = mirror_floor_with_wall(10.0f);
-  const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), camera_looking_down_the_floor());
-  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), camera_looking_down_the_floor());
-  const RenderedFrame rt = render_frame(scene, unfiltered(ReflectionMode::rt), camera_looking_down_the_floor());
+// A mirror floor and an emissive red ceiling (y = 4, z from 2 to 8) over a camera at (0, 1.5, 6) that
+// looks 60 degrees down: the whole ceiling lies behind the camera's image plane, yet the floor under
+// the camera mirrors it. A floor mirror only sends rays away from the viewer, so "behind the camera"
+// here is behind its image plane, which is what screen space cannot see.
+Scene mirror_floor_under_ceiling() {
+  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 0.0f));
+  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
+  const std::uint32_t ceiling = testing::add_material(scene, vec3(0.0f));
+  scene.materials[ceiling].emissive = vec3(4.0f, 0.0f, 0.0f);
+  testing::add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
+  // Edges -z then x: the normal cross(-z, x) = -y faces the floor.
+  testing::add_quad(scene, vec3(-6.0f, 4.0f, 8.0f), vec3(0.0f, 0.0f, -6.0f), vec3(12.0f, 0.0f, 0.0f), ceiling);
+  return scene;
+}
+
+FrameState camera_looking_steeply_down() {
+  const vec3 eye(0.0f, 1.5f, 6.0f);
+  return testing::look_at(eye, eye + vec3(0.0f, -std::sin(glm::radians(60.0f)), -std::cos(glm::radians(60.0f))),
+                          vec3(0.0f, 3.0f, 0.0f));
+}
+
+TEST_F(HybridPipelineTest, CeilingBehindTheCameraAppearsInHybridAndRtButNotSsr) {
+  const Scene scene = mirror_floor_under_ceiling();
+  const FrameState frame = camera_looking_steeply_down();
+  const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), frame);
+  const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), frame);
+  const RenderedFrame rt = render_frame(scene, unfiltered(ReflectionMode::rt), frame);
   EXPECT_EQ(count_red(ssr.image), 0);
-  EXPECT_GT(count_red(hybrid.image), 100) << "the floor reflects the wall behind the camera";
-  EXPECT_GT(count_red(rt.image), 100);
+  EXPECT_GT(count_red(hybrid.image), kWidth * kHeight / 4) << "the floor mirrors the ceiling behind the camera";
+  EXPECT_GT(count_red(rt.image), kWidth * kHeight / 4);
   // Every reflective pixel fails SSR here, so hybrid traces the same rays as rt: same image.
   ASSERT_TRUE(hybrid.ssr_counts && rt.ray_stats);
   EXPECT_EQ(hybrid.ssr_counts->failed, hybrid.ssr_counts->reflective);

@@ -107,14 +107,15 @@ bool light_blocked(vec3 point, vec3 light, const std::vector<QuadGeometry>& quad
   return false;
 }
 
-Scene mirror_floor_with_wall(float wall_z) {
+Scene mirror_floor_with_wall(float wall_z, vec2 wall_size) {
   Scene scene = make_empty_test_scene(vec3(0.0f, 6.0f, 0.0f));
   const std::uint32_t floor = add_material(scene, vec3(0.1f), 1.0f);
   const std::uint32_t wall = add_material(scene, vec3(0.0f));
   scene.materials[wall].emissive = vec3(4.0f, 0.0f, 0.0f);
   add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
   // Edges x then y: the normal cross(x, y) = +z faces a camera at larger z.
-  add_quad(scene, vec3(-3.0f, 0.0f, wall_z), vec3(6.0f, 0.0f, 0.0f), vec3(0.0f, 2.0f, 0.0f), wall);
+  add_quad(scene, vec3(-0.5f * wall_size.x, 0.0f, wall_z), vec3(wall_size.x, 0.0f, 0.0f), vec3(0.0f, wall_size.y, 0.0f),
+           wall);
   return scene;
 }
 

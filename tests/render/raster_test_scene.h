@@ -31,11 +31,11 @@ vec3 pixel_ray(const render::FrameConstants& constants, int x, int y);
 // Where the ray from `origin` along `direction` meets the quad, if it does (t > 0).
 std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3 edge_u, vec3 edge_v);
 
-// A mirror floor (reflectivity 1, dark grey) and an emissive red wall 6 wide, 2 high standing on it
-// at z = `wall_z`, facing +z. camera_looking_down_the_floor() at (0, 1.5, 6) looks towards -z,
+// A mirror floor (reflectivity 1, dark grey, 40 x 40 around the origin) and an emissive red wall
+// (`wall_size` wide and high, centred on x = 0) standing on it at z = `wall_z`, facing +z. camera_looking_down_the_floor() at (0, 1.5, 6) looks towards -z,
 // slightly down, so a wall at z = -4 is in view and its mirror image lies on the floor below it; a
 // wall at z = 10 is behind the camera, and only rays can find its reflection.
-Scene mirror_floor_with_wall(float wall_z);
+Scene mirror_floor_with_wall(float wall_z, vec2 wall_size = vec2(6.0f, 2.0f));
 FrameState camera_looking_down_the_floor();
 
 struct QuadGeometry {
