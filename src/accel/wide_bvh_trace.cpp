@@ -69,6 +69,10 @@ void trace_closest(const WideBvh8& bvh, std::span<const Ray> rays, std::span<Hit
                  wide_simd_path() == WideSimdPath::avx2 ? wide_kernel::closest_avx8 : wide_kernel::closest_sse8);
 }
 
+WideClosestKernel8 wide_closest_kernel8() {
+  return wide_simd_path() == WideSimdPath::avx2 ? wide_kernel::closest_avx8 : wide_kernel::closest_sse8;
+}
+
 void trace_any(const WideBvh4& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
   check_wide_traceable(bvh, rays.size(), occluded.size());
   trace_parallel(bvh, rays, occluded, wide_kernel::any_sse4);

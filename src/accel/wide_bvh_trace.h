@@ -5,6 +5,7 @@
 #include "accel/ray.h"
 #include "accel/wide_bvh.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -20,6 +21,14 @@ void trace_closest(const WideBvh8& bvh, std::span<const Ray> rays, std::span<Hit
 // occluded[i] = 1 when anything lies on rays[i] within [t_min, t_max], else 0.
 void trace_any(const WideBvh4& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded);
 void trace_any(const WideBvh8& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded);
+
+// The closest-hit kernel trace_closest(const WideBvh8&, ...) would use now, for callers that run
+// their own loop over rays and cannot hand over a whole batch (the two-level traversal calls it
+// with count 1 per instance it enters). Same contract as trace_closest per ray (Hit{} on a miss,
+// instance 0 on a hit, a hit at t == ray.t_max is accepted), without the checks: the caller checks
+// the BVH's depth once. Pick it once per batch: the path may be forced between batches.
+using WideClosestKernel8 = void (*)(const WideBvh8& bvh, const Ray* rays, Hit* hits, size_t count);
+WideClosestKernel8 wide_closest_kernel8();
 
 // Which kernel 8-wide BVHs use.
 enum class WideSimdPath { sse, avx2 };

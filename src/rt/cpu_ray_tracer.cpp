@@ -3,7 +3,10 @@
 #include "accel/bvh_stats.h"
 #include "accel/refit.h"
 #include "accel/tlas_trace.h"
+#include "accel/wide_bvh_collapse.h"
+#include "accel/wide_bvh_refit.h"
 #include "core/error.h"
+#include "rt/wide_two_level_trace.h"
 
 #include <algorithm>
 #include <chrono>
@@ -39,6 +42,11 @@ void CpuRayTracer::rebuild_blas(uint32_t mesh_index) {
   mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
   // The new BVH lives in new storage: the traversal's view must follow it.
   blases_[mesh_index] = accel::make_blas(mesh.bvh, view);
+  // collapse_to_wide refuses split references (it is checked here rather than caught, so a real
+  // collapse error still surfaces): such a mesh keeps tracing its binary BVH.
+  mesh.has_wide = options_.wide_traversal && mesh.bvh.refittable;
+  mesh.wide = mesh.has_wide ? accel::collapse_to_wide<8>(mesh.bvh, view) : accel::WideBvh8{};
+  wide_blases_[mesh_index] = mesh.has_wide ? &mesh.wide : nullptr;
 }
 
 void CpuRayTracer::require_built(const char* what) const {
@@ -56,6 +64,7 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
   meshes_.clear();
   meshes_.resize(scene.meshes.size());
   blases_.assign(scene.meshes.size(), accel::Blas{});
+  wide_blases_.assign(scene.meshes.size(), nullptr);
   for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
     meshes_[m].positions = scene.meshes[m].positions;
     meshes_[m].indices = scene.meshes[m].indices;
@@ -90,12 +99,18 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
       ++rebuilds_;
       continue;
     }
+    // The binary BVH is refitted even when tracing is wide: the TLAS boxes and the SAH drift come
+    // from it.
     accel::refit(mesh.bvh, mesh_view(mesh));
     if (policy == UpdatePolicy::automatic &&
         sah_cost(mesh.bvh, options_.build) > static_cast<double>(options_.auto_rebuild_sah_ratio) * mesh.sah_at_rebuild) {
       rebuild_blas(m);
       ++rebuilds_;
     } else {
+      // The wide BVH is refitted in place (re-gather its triangle blocks, boxes bottom-up) rather
+      // than collapsed again from the refitted binary BVH: same topology, no allocation, and
+      // measured faster (docs/ray-tracer.md).
+      if (mesh.has_wide) accel::refit(mesh.wide, mesh_view(mesh));
       ++refits_;
     }
   }
@@ -109,7 +124,10 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
 
 void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
   require_built("trace_closest()");
-  accel::trace_closest(tlas_, blases_, rays, hits);
+  if (options_.wide_traversal)
+    trace_closest_wide(tlas_, blases_, wide_blases_, rays, hits);
+  else
+    accel::trace_closest(tlas_, blases_, rays, hits);
 }
 
 RayTracerStats CpuRayTracer::stats() const {
@@ -123,7 +141,8 @@ RayTracerStats CpuRayTracer::stats() const {
                    blases_.size() * sizeof(accel::Blas);
   for (const MeshBlas& mesh : meshes_) {
     bytes += accel::compute_stats(mesh.bvh).memory_bytes + mesh.positions.size() * sizeof(vec3) +
-             mesh.indices.size() * sizeof(uint32_t);
+             mesh.indices.size() * sizeof(uint32_t) + mesh.wide.nodes.size() * sizeof(accel::WideNode<8>) +
+             mesh.wide.blocks.size() * sizeof(accel::TriangleBlock<8>);
     if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
     const double drift = sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild;
     stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);

@@ -7,8 +7,15 @@
 // builder whose BVHs cannot be refitted, e.g. sbvh), or, for automatic, refitted and then rebuilt
 // when its SAH cost (accel::compute_stats) exceeds auto_rebuild_sah_ratio x its SAH cost at its
 // last (re)build. Then the TLAS is refitted over the new BLAS boxes and the current transforms.
+//
+// Tracing (AccelOptions::wide_traversal, the default): every BLAS is also collapsed to an 8-wide
+// BVH (accel/wide_bvh_collapse.h) after each (re)build and refitted with it, and the TLAS walk
+// enters those with the SIMD kernel (rt/wide_two_level_trace.h). The binary BVH stays the master:
+// the TLAS boxes, the automatic policy's SAH cost and the drift in stats() come from it. A builder
+// whose BVH cannot be collapsed (sbvh, split references) traces its binary BVH for that mesh.
 #include "accel/bvh.h"
 #include "accel/tlas.h"
+#include "accel/wide_bvh.h"
 #include "rt/ray_tracer.h"
 #include "rt/scene_shape.h"
 
@@ -31,6 +38,8 @@ private:
     std::vector<vec3> positions;
     std::vector<uint32_t> indices;
     accel::Bvh bvh;
+    accel::WideBvh8 wide;  // collapsed from bvh; empty unless has_wide
+    bool has_wide = false;
     bool deformable = false;
     double sah_at_rebuild = 0.0;  // SAH cost right after the last (re)build
   };
@@ -43,6 +52,9 @@ private:
   SceneShape shape_;
   std::vector<MeshBlas> meshes_;
   std::vector<accel::Blas> blases_;  // views of meshes_, one per mesh, rebuilt with the BVHs
+  // &meshes_[m].wide when it has one, else nullptr (trace the binary BVH); meshes_ never moves
+  // after build(), so the pointers stay valid.
+  std::vector<const accel::WideBvh8*> wide_blases_;
   accel::Tlas tlas_;
   bool built_ = false;
   double build_ms_ = 0.0;

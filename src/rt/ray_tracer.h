@@ -45,6 +45,10 @@ struct AccelOptions {
   // UpdatePolicy::automatic (cpu backend): a deformable mesh's BLAS is refitted, and rebuilt when
   // its SAH cost after the refit exceeds this factor times its SAH cost at its last (re)build.
   float auto_rebuild_sah_ratio = 1.3f;
+  // cpu backend: trace every BLAS through an 8-wide BVH collapsed from its binary one (SIMD
+  // kernels, several times faster); false traces the binary BVHs (kept for comparison). Builders
+  // whose BVH cannot be collapsed (sbvh: split references) trace the binary BVH either way.
+  bool wide_traversal = true;
 };
 
 struct RayTracerStats {

@@ -20,10 +20,14 @@ Scene strongly_deforming_scene() {
   return scene;
 }
 
-RayTracerStats update_once(Scene& scene, UpdatePolicy policy, float ratio) {
+// Builds, deforms once, updates with `policy`, checks the hits and returns the stats. The policy
+// and the drift come from the binary BVH whatever the traversal, so every check below runs with
+// both traversals.
+RayTracerStats update_once(Scene& scene, UpdatePolicy policy, float ratio, bool wide_traversal) {
   CpuRayTracer tracer;
   AccelOptions options;
   options.auto_rebuild_sah_ratio = ratio;
+  options.wide_traversal = wide_traversal;
   tracer.build(scene, options);
   EXPECT_EQ(tracer.stats().blas_sah_drift, 1.0);
   SceneDeformers deformers(scene);
@@ -33,37 +37,39 @@ RayTracerStats update_once(Scene& scene, UpdatePolicy policy, float ratio) {
   return tracer.stats();
 }
 
-TEST(CpuRayTracerPolicy, RefitDriftsAndRebuildDoesNot) {
+class CpuRayTracerPolicy : public ::testing::TestWithParam<bool> {};
+
+TEST_P(CpuRayTracerPolicy, RefitDriftsAndRebuildDoesNot) {
   Scene refitted = strongly_deforming_scene();
-  const RayTracerStats refit = update_once(refitted, UpdatePolicy::refit, 1.3f);
+  const RayTracerStats refit = update_once(refitted, UpdatePolicy::refit, 1.3f, GetParam());
   EXPECT_EQ(refit.refits, 1u);
   EXPECT_EQ(refit.rebuilds, 0u);
   ASSERT_TRUE(refit.blas_sah_drift.has_value());
   EXPECT_GT(*refit.blas_sah_drift, 1.0);
 
   Scene rebuilt = strongly_deforming_scene();
-  const RayTracerStats rebuild = update_once(rebuilt, UpdatePolicy::rebuild, 1.3f);
+  const RayTracerStats rebuild = update_once(rebuilt, UpdatePolicy::rebuild, 1.3f, GetParam());
   EXPECT_EQ(rebuild.rebuilds, 1u);
   EXPECT_EQ(rebuild.refits, 0u);
   EXPECT_EQ(rebuild.blas_sah_drift, 1.0);
 }
 
-TEST(CpuRayTracerPolicy, AutomaticRebuildsPastTheThresholdAndRefitsBelowIt) {
+TEST_P(CpuRayTracerPolicy, AutomaticRebuildsPastTheThresholdAndRefitsBelowIt) {
   Scene strict = strongly_deforming_scene();
-  const RayTracerStats rebuilt = update_once(strict, UpdatePolicy::automatic, 1.0f);
+  const RayTracerStats rebuilt = update_once(strict, UpdatePolicy::automatic, 1.0f, GetParam());
   EXPECT_EQ(rebuilt.rebuilds, 1u);
   EXPECT_EQ(rebuilt.refits, 0u);
   EXPECT_EQ(rebuilt.blas_sah_drift, 1.0);
 
   Scene lenient = strongly_deforming_scene();
-  const RayTracerStats refitted = update_once(lenient, UpdatePolicy::automatic, 1000.0f);
+  const RayTracerStats refitted = update_once(lenient, UpdatePolicy::automatic, 1000.0f, GetParam());
   EXPECT_EQ(refitted.rebuilds, 0u);
   EXPECT_EQ(refitted.refits, 1u);
   ASSERT_TRUE(refitted.blas_sah_drift.has_value());
   EXPECT_GT(*refitted.blas_sah_drift, 1.0);
 }
 
-TEST(CpuRayTracerPolicy, NoDriftWithoutDeformableMeshes) {
+TEST(CpuRayTracerPolicyOptions, NoDriftWithoutDeformableMeshes) {
   Scene scene = testing::make_instanced_scene();
   for (Mesh& mesh : scene.meshes) {
     mesh.deformable = false;
@@ -74,11 +80,12 @@ TEST(CpuRayTracerPolicy, NoDriftWithoutDeformableMeshes) {
   EXPECT_FALSE(tracer.stats().blas_sah_drift.has_value());
 }
 
-TEST(CpuRayTracerPolicy, RefittingSbvhIsAClearErrorAndRebuildingWorks) {
+TEST_P(CpuRayTracerPolicy, RefittingSbvhIsAClearErrorAndRebuildingWorks) {
   Scene scene = testing::make_instanced_scene();
   CpuRayTracer tracer;
   AccelOptions options;
   options.builder = accel::BvhBuilder::sbvh;
+  options.wide_traversal = GetParam();
   tracer.build(scene, options);
   SceneDeformers deformers(scene);
   const std::vector<uint32_t> dirty = deformers.apply(scene, 9);
@@ -92,7 +99,10 @@ TEST(CpuRayTracerPolicy, RefittingSbvhIsAClearErrorAndRebuildingWorks) {
   EXPECT_EQ(testing::compare_hits(scene, rays, testing::brute_force_hits(scene, rays), testing::trace(tracer, rays)), "");
 }
 
-TEST(CpuRayTracerPolicy, ThresholdBelowOneIsRefused) {
+INSTANTIATE_TEST_SUITE_P(Traversal, CpuRayTracerPolicy, ::testing::Values(true, false),
+                         [](const ::testing::TestParamInfo<bool>& traversal) { return traversal.param ? "wide" : "binary"; });
+
+TEST(CpuRayTracerPolicyOptions, ThresholdBelowOneIsRefused) {
   CpuRayTracer tracer;
   AccelOptions options;
   options.auto_rebuild_sah_ratio = 0.5f;

@@ -42,11 +42,15 @@ TEST(RayTracer, CpuBackendEqualsBruteForceWithEveryBuilder) {
   const std::vector<accel::Ray> rays = random_rays(scene, 1000, 11);
   const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
-    const auto tracer = make_ray_tracer("cpu");
-    AccelOptions options;
-    options.builder = builder;
-    tracer->build(scene, options);
-    EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "") << accel::builder_name(builder);
+    for (bool wide : {true, false}) {
+      const auto tracer = make_ray_tracer("cpu");
+      AccelOptions options;
+      options.builder = builder;
+      options.wide_traversal = wide;
+      tracer->build(scene, options);
+      EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "")
+          << accel::builder_name(builder) << (wide ? " wide" : " binary");
+    }
   }
 }
 
@@ -67,9 +71,10 @@ TEST(RayTracer, BackendsEqualBruteForceAndEachOtherOnReducedAtrium) {
 
 // Deforms, updates with `policy` and checks against brute force on the deformed geometry, twice
 // (two frames), so a second update on top of a refit is covered too.
-void check_updates(Scene scene, std::string_view backend, UpdatePolicy policy, size_t ray_count) {
+void check_updates(Scene scene, std::string_view backend, UpdatePolicy policy, size_t ray_count,
+                   const AccelOptions& options = {}) {
   const auto tracer = make_ray_tracer(backend);
-  tracer->build(scene, {});
+  tracer->build(scene, options);
   SceneDeformers deformers(scene);
   const std::vector<accel::Ray> rays = random_rays(scene, ray_count, 5);
   const std::vector<accel::Hit> rest = brute_force_hits(scene, rays);
@@ -80,7 +85,8 @@ void check_updates(Scene scene, std::string_view backend, UpdatePolicy policy, s
     const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
     ASSERT_NE(compare_hits(scene, rays, rest, expected), "") << "the deformation must change some hits";
     EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "")
-        << backend << " " << update_policy_name(policy) << " frame " << frame;
+        << backend << " " << update_policy_name(policy) << " frame " << frame
+        << (options.wide_traversal ? "" : " binary traversal");
   }
   const RayTracerStats stats = tracer->stats();
   EXPECT_EQ(stats.rebuilds + stats.refits, 2 * scene.deformable_meshes().size());
@@ -95,24 +101,34 @@ void check_updates(Scene scene, std::string_view backend, UpdatePolicy policy, s
 TEST(RayTracer, UpdatesEqualBruteForceOnTheDeformedInstancedScene) {
   for (std::string_view backend : kBackends)
     for (UpdatePolicy policy : kAllUpdatePolicies) check_updates(testing::make_instanced_scene(), backend, policy, 1500);
+  AccelOptions binary;  // the cpu backend's binary traversal (the wide one is the default above)
+  binary.wide_traversal = false;
+  for (UpdatePolicy policy : kAllUpdatePolicies)
+    check_updates(testing::make_instanced_scene(), "cpu", policy, 1500, binary);
 }
 
 TEST(RayTracer, UpdatesEqualBruteForceOnTheDeformedReducedAtrium) {
   const Scene scene = testing::make_reduced_atrium();
   for (std::string_view backend : kBackends)
     for (UpdatePolicy policy : kAllUpdatePolicies) check_updates(scene, backend, policy, 200);
+  AccelOptions binary;
+  binary.wide_traversal = false;
+  for (UpdatePolicy policy : kAllUpdatePolicies) check_updates(scene, "cpu", policy, 200, binary);
 }
 
 TEST(RayTracer, UpdateFollowsMovedInstances) {
   Scene scene = testing::make_instanced_scene();
-  for (std::string_view backend : kBackends) {
+  for (const auto& [backend, wide] : {std::pair{"cpu", true}, std::pair{"cpu", false}, std::pair{"embree", true}}) {
     Scene moved = scene;
     const auto tracer = make_ray_tracer(backend);
-    tracer->build(moved, {});
+    AccelOptions options;
+    options.wide_traversal = wide;
+    tracer->build(moved, options);
     moved.instances[5].transform[3] += vec4(0.5f, 1.0f, -0.25f, 0.0f);
     tracer->update(moved, {}, UpdatePolicy::refit);
     const std::vector<accel::Ray> rays = random_rays(moved, 1000, 9);
-    EXPECT_EQ(compare_hits(moved, rays, brute_force_hits(moved, rays), trace(*tracer, rays)), "") << backend;
+    EXPECT_EQ(compare_hits(moved, rays, brute_force_hits(moved, rays), trace(*tracer, rays)), "")
+        << backend << (wide ? "" : " binary traversal");
   }
 }
 
