@@ -49,6 +49,14 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   settings.ray_tracing.backend = options.backend;
   settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
+  // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
+  // references cannot be refitted.
+  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && options.backend == "cpu" &&
+      settings.ray_tracing.accel.builder == accel::BvhBuilder::sbvh &&
+      settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
+    fail("--accel sbvh cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
+         "or --deform off",
+         options.update);
   settings.validate();
   return settings;
 }

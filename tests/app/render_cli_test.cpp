@@ -49,7 +49,8 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
     const ImageRgba8 image = read_png(out / (std::string(frame) + ".png"));
     EXPECT_EQ(image.width, 64);
     EXPECT_EQ(image.height, 36);
-    for (const char* view : {"albedo", "normals", "positions", "depth", "shadow_mask", "ssr_reflection", "failure_mask"})
+    for (const char* view : {"albedo", "normals", "positions", "depth", "shadow_mask", "ssr_reflection", "failure_mask",
+                             "traced_reflection", "reflection"})
       EXPECT_TRUE(fs::exists(out / (std::string(frame) + "_" + view + ".png"))) << frame << " " << view;
   }
   if (video) {
@@ -58,9 +59,10 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
 
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 3u) << "header + one row per frame";
-  const std::vector<std::string> header = {"frame", "shadow_ms", "gbuffer_ms", "light_ms", "ssr_ms", "resolve_ms",
-                                           "gpu_total_ms", "cpu_frame_ms", "deform_ms", "triangles",
-                                           "reflective_pixels", "ssr_failed_pixels"};
+  const std::vector<std::string> header = {
+      "frame",        "shadow_ms",       "gbuffer_ms", "light_ms",  "ssr_ms",            "ray_list_ms",
+      "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "cpu_frame_ms", "deform_ms",   "accel_update_ms",
+      "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced"};
   EXPECT_EQ(csv[0], header);
   EXPECT_EQ(csv[1][0], "2100");
   EXPECT_EQ(csv[2][0], "2101");
@@ -68,7 +70,8 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
     ASSERT_EQ(csv[row].size(), header.size());
     for (std::size_t column = 1; column < header.size(); ++column)
       EXPECT_GE(std::stod(csv[row][column]), 0.0) << header[column];
-    EXPECT_LE(std::stoul(csv[row][11]), std::stoul(csv[row][10])) << "failed pixels are reflective pixels";
+    EXPECT_LE(std::stoul(csv[row][15]), std::stoul(csv[row][14])) << "failed pixels are reflective pixels";
+    EXPECT_EQ(csv[row][16], csv[row][15]) << "hybrid traces exactly the failed pixels";
   }
 
   const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
@@ -76,7 +79,13 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
   EXPECT_EQ(run["resolution"], nlohmann::json::array({64, 36}));
   EXPECT_EQ(run["frames"]["count"], 2);
   EXPECT_EQ(run["frames_rendered"], 2);
-  EXPECT_EQ(run["options"]["reflections"], "ssr");
+  EXPECT_EQ(run["options"]["reflections"], "hybrid") << "the default mode";
+  EXPECT_EQ(run["ray_tracer"]["backend"], "cpu");
+  EXPECT_EQ(run["ray_tracer"]["accel"], "sah");
+  EXPECT_EQ(run["ray_tracer"]["update"], "auto");
+  EXPECT_GT(run["ray_tracer"]["memory_bytes"].get<double>(), 0.0);
+  EXPECT_EQ(run["ray_tracer"]["rebuilds"].get<int>() + run["ray_tracer"]["refits"].get<int>(), 2 * 2)
+      << "two deforming dinosaurs, updated at each of the two frames";
   EXPECT_EQ(run["scene"]["name"], "atrium-simple");
   EXPECT_NE(run["command"].get<std::string>().find("render atrium-simple"), std::string::npos);
 
@@ -95,10 +104,27 @@ TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoIm
   EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 12u);
-  EXPECT_EQ(csv[1][4], "") << "ssr_ms";
-  EXPECT_EQ(csv[1][10], "") << "reflective_pixels";
-  EXPECT_EQ(csv[1][11], "") << "ssr_failed_pixels";
+  ASSERT_EQ(csv[1].size(), 17u);
+  for (const int column : {4, 5, 6, 11, 12, 14, 15, 16})
+    EXPECT_EQ(csv[1][column], "") << "column " << column << " (no SSR, no ray tracing)";
+}
+
+TEST_F(RenderCli, RtModeWithEmbreeTracesEveryReflectivePixel) {
+  TempFolder folder;
+  const fs::path out = folder.path() / "rt";
+  const CliResult r = run_glint("render atrium-simple --reflections rt --backend embree --update rebuild --timings-only "
+                                "--width 48 --height 27 --frames 2100 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto csv = read_csv(out / "timings.csv");
+  ASSERT_EQ(csv.size(), 2u);
+  ASSERT_EQ(csv[1].size(), 17u);
+  EXPECT_EQ(csv[1][4], "") << "no SSR in rt mode";
+  EXPECT_EQ(csv[1][15], "") << "no SSR failures in rt mode";
+  EXPECT_GT(std::stoul(csv[1][16]), 0u);
+  EXPECT_EQ(csv[1][16], csv[1][14]) << "rt traces every reflective pixel";
+  const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
+  EXPECT_EQ(run["ray_tracer"]["backend"], "embree");
+  EXPECT_EQ(run["ray_tracer"]["update"], "rebuild");
 }
 
 TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
@@ -113,6 +139,14 @@ TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
   EXPECT_EQ(run_glint("render atrium-simple --reflections maybe --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --width 0 --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --frames 3:1 --out " + quoted(out)).exit_code, 1);
+  EXPECT_EQ(run_glint("render atrium-simple --backend optix9 --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint("render atrium-simple --accel octree --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint("render atrium-simple --update sometimes --out " + quoted(out)).exit_code, 2);
+  for (const char* conflict : {"--backend embree --accel lbvh", "--accel sbvh --update refit"}) {
+    const CliResult r = run_glint(std::string("render atrium-simple ") + conflict + " --out " + quoted(out));
+    EXPECT_EQ(r.exit_code, 1) << conflict;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+  }
   const CliResult missing = run_glint("render /nonexistent/scene.obj --out " + quoted(out));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/scene.obj"), std::string::npos);
