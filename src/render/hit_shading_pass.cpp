@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gl/gl_check.h"
+#include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
@@ -53,7 +54,7 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t ray_count
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glBindImageTexture(kReflectionUnit, inputs.reflection, 0, GL_FALSE, 0, GL_READ_WRITE, kReflectionFormat);
   program_.use();
-  glDispatchCompute((ray_count + kWorkGroupSize - 1) / kWorkGroupSize, 1, 1);
+  glDispatchCompute(work_groups(ray_count, kWorkGroupSize), 1, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   check_gl("hit shading");
 }

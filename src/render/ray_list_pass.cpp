@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gl/gl_check.h"
+#include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
@@ -13,10 +14,7 @@
 namespace glint::render {
 namespace {
 
-constexpr int kWorkGroupSize = 8;  // local_size_x/y in ray_list.comp.glsl
 constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kFailureMaskUnit = 3;
-
-GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
 
 }  // namespace
 
@@ -59,7 +57,7 @@ void RayListPass::run(const RayListInputs& inputs) {
                      GL_READ_ONLY, kFailureMaskFormat);
   program_.set_uniform("trace_all", trace_all ? 1 : 0);
   program_.use();
-  glDispatchCompute(group_count(width_), group_count(height_), 1);
+  dispatch_over_image(width_, height_);
   // Hit shading reads the pixel list as a storage buffer; the CPU's view is made visible by
   // RayHitBuffers::finish_ray_list().
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

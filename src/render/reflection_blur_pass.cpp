@@ -1,6 +1,7 @@
 #include "render/reflection_blur_pass.h"
 
 #include "gl/gl_check.h"
+#include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
@@ -10,13 +11,10 @@
 namespace glint::render {
 namespace {
 
-constexpr int kWorkGroupSize = 8;  // local_size_x/y in reflection_blur.comp.glsl
 // `mode` values of the shader.
 constexpr int kFadeOnly = 0, kHorizontal = 1, kVertical = 2;
 // Image units of the shader.
 constexpr GLuint kSourceUnit = 0, kTargetUnit = 1, kOriginalUnit = 2;
-
-GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
 
 }  // namespace
 
@@ -55,7 +53,7 @@ void ReflectionBlurPass::run(GLuint reflection, const ResolveSettings& settings)
     glBindImageTexture(kSourceUnit, source, 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
     glBindImageTexture(kTargetUnit, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
     glBindImageTexture(kOriginalUnit, reflection, 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
-    glDispatchCompute(group_count(width_), group_count(height_), 1);
+    dispatch_over_image(width_, height_);
   };
   if (settings.blur_radius == 0) {
     dispatch(kFadeOnly, reflection, output_.id());

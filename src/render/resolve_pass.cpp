@@ -1,6 +1,7 @@
 #include "render/resolve_pass.h"
 
 #include "gl/gl_check.h"
+#include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
@@ -8,11 +9,8 @@
 namespace glint::render {
 namespace {
 
-constexpr int kWorkGroupSize = 8;  // local_size_x/y in resolve.comp.glsl
 // Image units of resolve.comp.glsl.
 constexpr GLuint kLitUnit = 0, kAlbedoUnit = 1, kReflectionUnit = 2, kFinalUnit = 3;
-
-GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
 
 }  // namespace
 
@@ -50,7 +48,7 @@ void ResolvePass::run(const ResolveInputs& inputs) {
   glBindImageTexture(kReflectionUnit, blur_.output(), 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
   glBindImageTexture(kFinalUnit, final_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFinalFormat);
   program_.use();
-  glDispatchCompute(group_count(w), group_count(h), 1);
+  dispatch_over_image(w, h);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);
   check_gl("resolve");

@@ -1,6 +1,7 @@
 #include "render/ssr_pass.h"
 
 #include "gl/gl_check.h"
+#include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
@@ -11,13 +12,9 @@
 namespace glint::render {
 namespace {
 
-constexpr int kWorkGroupSize = 8;  // local_size_x/y in ssr.comp.glsl
-
 // Image units, as declared in ssr.comp.glsl.
 constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit = 3, kReflectionUnit = 4,
                  kFailureMaskUnit = 5;
-
-GLuint group_count(int pixels) { return static_cast<GLuint>((pixels + kWorkGroupSize - 1) / kWorkGroupSize); }
 
 }  // namespace
 
@@ -73,7 +70,7 @@ void SsrPass::run(const SsrInputs& inputs) {
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
 
   program_.use();
-  glDispatchCompute(group_count(width_), group_count(height_), 1);
+  dispatch_over_image(width_, height_);
   // Later passes read the outputs as images or textures, the ray-trace step reads the counters as a
   // buffer, and tests read everything back.
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
