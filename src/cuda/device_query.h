@@ -17,4 +17,10 @@ struct CudaDeviceInfo {
 // `why_none`, when given, receives the reason the list is empty.
 std::vector<CudaDeviceInfo> query_cuda_devices(std::string* why_none = nullptr);
 
+// True when glint was built with CUDA and a CUDA GPU is usable now (GPU tests skip otherwise).
+bool cuda_gpu_present();
+
+// Throws one clear glint::Error, "<what> needs a CUDA GPU: <reason>", when there is none.
+void require_cuda_gpu(const char* what);
+
 }  // namespace glint

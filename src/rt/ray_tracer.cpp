@@ -7,6 +7,7 @@
 namespace glint::rt {
 
 RayTracer::~RayTracer() = default;
+DeviceTracing::~DeviceTracing() = default;
 
 std::string_view update_policy_name(UpdatePolicy policy) {
   switch (policy) {

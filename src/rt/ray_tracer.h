@@ -64,6 +64,8 @@ struct RayTracerStats {
   std::string backend;          // "cpu", "embree"
 };
 
+class DeviceTracing;
+
 class RayTracer {
 public:
   virtual ~RayTracer();
@@ -85,6 +87,35 @@ public:
 
   virtual RayTracerStats stats() const = 0;
   virtual std::string_view name() const = 0;
+
+  // GPU backends (cuda) also trace rays that already live in GPU memory; CPU backends return null.
+  virtual DeviceTracing* device_tracing() { return nullptr; }
+};
+
+// The device-resident side of a GPU backend: the hybrid renderer hands it GL buffers mapped into
+// CUDA, so rays, hits and vertices never travel through the host during a frame. Every call is
+// enqueued on the backend's CUDA stream (stream()) and returns without waiting for the GPU.
+class DeviceTracing {
+public:
+  virtual ~DeviceTracing();
+
+  // The backend's CUDA stream (a cudaStream_t), on which callers order their own GPU work.
+  virtual void* stream() = 0;
+
+  // hits[i] = closest hit of rays[i] for i < *ray_count (a device-memory counter, read on the GPU,
+  // so the host never waits for it); rays, hits and ray_count are device pointers, and at most
+  // `capacity` rays are traced. Same hit convention as RayTracer::trace_closest.
+  virtual void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                    uint32_t capacity) = 0;
+  // GPU time of the last trace_closest_device in milliseconds (CUDA events; waits for it to end).
+  virtual double last_trace_ms() = 0;
+
+  // Object-space positions of mesh `mesh` in device memory (vertex_count vec3, the backend's own
+  // copy), for a GPU deformer to overwrite before update_device(); glint::Error out of range.
+  virtual vec3* device_positions(uint32_t mesh) = 0;
+  // Like RayTracer::update, after a GPU deformer rewrote device_positions() of `dirty_meshes`:
+  // nothing is copied from the host.
+  virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
 };
 
 // "cpu" or "embree"; glint::Error listing the known names otherwise.
