@@ -17,8 +17,11 @@ if(NOT GLINT_CUDA STREQUAL "OFF")
     endif()
     enable_language(CUDA)
     find_package(CUDAToolkit REQUIRED)
-    # CMake 3.25 does not know nvcc 13 accepts C++20; device code keeps to C++17.
-    set(CMAKE_CUDA_STANDARD 17)
+    # Device code shares accel/ headers (std::span etc.) with the host, so it is C++20 too. CMake
+    # 3.25 does not know that nvcc 13 accepts -std=c++20, so it is told the flag.
+    set(CMAKE_CUDA20_STANDARD_COMPILE_OPTION "-std=c++20")
+    set(CMAKE_CUDA20_EXTENSION_COMPILE_OPTION "-std=c++20")
+    set(CMAKE_CUDA_STANDARD 20)
     set(CMAKE_CUDA_STANDARD_REQUIRED ON)
     set(GLINT_HAVE_CUDA ON)
     message(STATUS "glint: CUDA on (nvcc ${CMAKE_CUDA_COMPILER_VERSION}, architectures ${CMAKE_CUDA_ARCHITECTURES})")

@@ -4,7 +4,6 @@
 
 #include <cuda_runtime.h>
 
-#include <fmt/format.h>
 
 namespace glint {
 
@@ -13,7 +12,7 @@ std::vector<CudaDeviceInfo> query_cuda_devices(std::string* why_none) {
   int count = 0;
   const cudaError_t status = cudaGetDeviceCount(&count);
   if (status != cudaSuccess) {
-    if (why_none) *why_none = fmt::format("no usable CUDA GPU: {}", cudaGetErrorString(status));
+    if (why_none) *why_none = std::string("no usable CUDA GPU: ") + cudaGetErrorString(status);
     cudaGetLastError();  // clear the sticky "no device" error so later calls start clean
     return devices;
   }

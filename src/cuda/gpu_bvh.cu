@@ -1,0 +1,37 @@
+#include "cuda/gpu_bvh.h"
+
+namespace glint::cuda {
+
+std::vector<uint32_t> bvh_parents(const accel::Bvh& bvh) {
+  std::vector<uint32_t> parents(bvh.nodes.size(), kNoParent);
+  for (uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+    const accel::BvhNode& node = bvh.nodes[i];
+    if (node.is_leaf()) continue;
+    parents[node.left()] = i;
+    parents[node.right()] = i;
+  }
+  return parents;
+}
+
+void GpuBvh::upload(const accel::Bvh& bvh, cudaStream_t stream) {
+  nodes.upload(std::span<const accel::BvhNode>(bvh.nodes), stream);
+  prim_indices.upload(std::span<const uint32_t>(bvh.prim_indices), stream);
+  // Synchronous: the parent list is a temporary of this call.
+  const std::vector<uint32_t> parent_list = bvh_parents(bvh);
+  if (stream) GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
+  parents.upload(std::span<const uint32_t>(parent_list));
+  depth = bvh.depth;
+  refittable = bvh.refittable;
+}
+
+accel::Bvh GpuBvh::download(const char* builder) const {
+  accel::Bvh bvh;
+  bvh.nodes = nodes.download();
+  bvh.prim_indices = prim_indices.download();
+  bvh.depth = depth;
+  bvh.refittable = refittable;
+  bvh.builder = builder;
+  return bvh;
+}
+
+}  // namespace glint::cuda
