@@ -31,7 +31,9 @@ layout(binding = 0, rgba16f) uniform writeonly image2D reflection;
 layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
 layout(binding = 1) uniform samplerCube shadow_cube;
 
-uniform int ray_count;
+// Written by the ray-list pass: the shader reads the number of rays itself, so a GPU ray tracer's
+// frame can be shaded without the host ever learning it (the dispatch covers max_rays).
+layout(std430, binding = 9) readonly buffer RayCounters { uint ray_count; uint reflective_count; };
 uniform float miss_distance;
 uniform float ambient_fraction;
 uniform float texture_layer_size;
@@ -83,7 +85,7 @@ float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, fl
 
 void main() {
   const int i = int(gl_GlobalInvocationID.x);
-  if (i >= ray_count) return;
+  if (uint(i) >= ray_count) return;
   const uint pixel_index = ray_pixels[i];
   const ivec2 pixel = ivec2(int(pixel_index) % viewport.x, int(pixel_index) / viewport.x);
   const Ray ray = rays[i];

@@ -8,10 +8,12 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress_bar.h"
+#include "cuda/device_query.h"
 #include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
 #include "accel/builder.h"
 #include "render/frame_pipeline.h"
+#include "render/gpu_deformation.h"
 #include "rt/ray_tracer.h"
 #include "scene/camera_path.h"
 #include "scene/load_scene.h"
@@ -20,6 +22,7 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -45,35 +48,47 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
   if (options.backend == "embree" && options.accel != "sah")
-    fail("--accel {} applies to the cpu backend; the embree backend builds its own structures", options.accel);
+    fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures", options.accel);
   settings.ray_tracing.backend = options.backend;
   settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
   // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
   // references cannot be refitted.
-  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && options.backend == "cpu" &&
+  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && options.backend != "embree" &&
       settings.ray_tracing.accel.builder == accel::BvhBuilder::sbvh &&
       settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
     fail("--accel sbvh cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
          "or --deform off",
          options.update);
+  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && deforms_on_gpu(options) &&
+      options.backend != "cuda")
+    fail("--deform-on gpu needs --backend cuda when reflections are ray traced (the {} backend builds from host "
+         "vertices); use --deform-on cpu",
+         options.backend);
   settings.validate();
   return settings;
 }
 
 struct DeformTimes {
-  double deform_ms = 0.0;        // the deformers and the GPU vertex upload
-  double accel_update_ms = 0.0;  // the ray tracer's structures
+  double deform_ms = 0.0;        // cpu: the deformers and the GL vertex upload (wall); gpu: the kernels (GPU time)
+  double accel_update_ms = 0.0;  // the ray tracer's structures (wall)
 };
 
-// Moves the deformable meshes to `frame`, copies their new vertices to the GPU and updates the ray
-// tracer's structures.
-DeformTimes deform(SceneDeformers* deformers, Scene& scene, render::FramePipeline& pipeline, int frame) {
+// Moves the deformable meshes to `frame` and updates the ray tracer's structures: on the CPU (then
+// the new vertices are copied to GL and the tracer) or, with a GPU deformer, on the GPU (nothing is
+// copied; the kernels' time is read after the frame, see gpu_deform_ms).
+DeformTimes deform(SceneDeformers* deformers, cuda::GpuSceneDeformer* gpu_deformer, Scene& scene,
+                   render::FramePipeline& pipeline, int frame) {
   if (deformers == nullptr) return {};
+  DeformTimes times;
+  if (gpu_deformer != nullptr) {
+    const std::vector<std::uint32_t> dirty = gpu_deformer->apply(frame);
+    times.accel_update_ms = pipeline.update_ray_tracer_on_device(dirty);
+    return times;
+  }
   const auto start = Clock::now();
   const std::vector<std::uint32_t> dirty = deformers->apply(scene, frame);
   pipeline.upload_meshes(dirty);
-  DeformTimes times;
   times.deform_ms = milliseconds_since(start);
   times.accel_update_ms = pipeline.update_ray_tracer(dirty);
   return times;
@@ -90,6 +105,10 @@ std::string builder_names() {
 
 }  // namespace
 
+bool deforms_on_gpu(const RenderOptions& options) {
+  return options.deform_on.empty() ? options.backend == "cuda" : options.deform_on == "gpu";
+}
+
 void add_render_command(CLI::App& app, RenderOptions& options) {
   CLI::App* command = app.add_subcommand(
       "render", "Render frames of a scene's walkthrough headless: PNG frames, timings.csv, run.json");
@@ -101,10 +120,12 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::IsMember({"off", "ssr", "hybrid", "rt"}))
       ->capture_default_str();
   command->add_option("--backend", options.backend,
-                      "Ray tracing backend for hybrid and rt: cpu (glint's own structures) or embree")
-      ->check(CLI::IsMember({"cpu", "embree"}))
+                      "Ray tracing backend for hybrid and rt: cpu (glint's own structures on the CPU), embree, or "
+                      "cuda (glint's own structures on the GPU; needs a CUDA GPU)")
+      ->check(CLI::IsMember({"cpu", "embree", "cuda"}))
       ->capture_default_str();
-  command->add_option("--accel", options.accel, "Structure of the cpu backend's per-mesh BVHs: " + builder_names())
+  command->add_option("--accel", options.accel,
+                      "Structure of the cpu and cuda backends' per-mesh BVHs: " + builder_names())
       ->check([](const std::string& name) {
         try {
           (void)accel::parse_bvh_builder(name);
@@ -136,6 +157,10 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_option("--deform", options.deform, "Animate the deformable meshes: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  command->add_option("--deform-on", options.deform_on,
+                      "Where the deformable meshes are posed: gpu (CUDA kernels writing the GL vertices and the "
+                      "cuda backend's structures in place) or cpu; default: gpu with --backend cuda, else cpu")
+      ->check(CLI::IsMember({"gpu", "cpu"}));
   command->add_option("--blur-radius", options.blur_radius, "Reflection blur radius in pixels (0 = off)")
       ->check(CLI::Range(0, 32))
       ->capture_default_str();
@@ -169,10 +194,15 @@ int run_render_command(const RenderOptions& options) {
   const std::vector<int> frames = selection.resolve(animation.frame_count());
   std::optional<SceneDeformers> deformers;
   if (options.deform == "on" && !scene.deformable_meshes().empty()) deformers.emplace(scene);
+  // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
+  if (render::uses_ray_tracing(settings.reflections) && options.backend == "cuda") require_cuda_gpu("--backend cuda");
+  if (deformers && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
   const OutputFolder out(options.out);
   HeadlessGlContext context;  // logs its renderer with --verbose
   render::FramePipeline pipeline(scene, options.width, options.height, settings);
+  std::unique_ptr<cuda::GpuSceneDeformer> gpu_deformer;
+  if (deformers && deforms_on_gpu(options)) gpu_deformer = render::make_gpu_deformer(*deformers, pipeline);
   GpuTimer timer(pass_timing_for_renderer(context.renderer()));
 
   RenderRunRecord record(options, scene, context, timer.method(), frames);
@@ -186,12 +216,13 @@ int run_render_command(const RenderOptions& options) {
   const auto run_start = Clock::now();
   for (const int frame : frames) {
     const auto frame_start = Clock::now();
-    const DeformTimes deform_times = deform(deformers ? &*deformers : nullptr, scene, pipeline, frame);
+    DeformTimes deform_times = deform(deformers ? &*deformers : nullptr, gpu_deformer.get(), scene, pipeline, frame);
     timer.begin_frame();
     pipeline.render(animation.at(frame), &timer);
     timer.end_frame();
     glFinish();  // the CPU frame time includes the GPU finishing the frame
     const double cpu_frame_ms = milliseconds_since(frame_start);
+    if (gpu_deformer) deform_times.deform_ms = gpu_deformer->last_apply_ms();
 
     if (!options.timings_only) {
       const ImageRgba8 image = pipeline.read_final();

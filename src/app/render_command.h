@@ -11,8 +11,8 @@ namespace glint {
 struct RenderOptions {
   std::string scene = "atrium";
   std::string reflections = "hybrid";  // off|ssr|hybrid|rt
-  std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree
-  std::string accel = "sah";           // cpu backend's BLAS builder (accel::builder_name)
+  std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree|cuda
+  std::string accel = "sah";           // cpu and cuda backends' BLAS builder (accel::builder_name)
   std::string update = "auto";         // deformed meshes' structures: rebuild|refit|auto
   int width = 1280;
   int height = 720;
@@ -22,6 +22,7 @@ struct RenderOptions {
   bool video = false;
   bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)
   std::string deform = "on";      // on|off: animate the deformable meshes
+  std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda, cpu otherwise
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
   int blur_radius = 2;
   float exposure = 1.0f;
@@ -32,6 +33,9 @@ struct RenderOptions {
   float ssr_confidence = 0.9f;
   std::string command_line;       // for run.json, set by the CLI
 };
+
+// Whether the deformable meshes are posed on the GPU (--deform-on, resolved against --backend).
+bool deforms_on_gpu(const RenderOptions& options);
 
 void add_render_command(CLI::App& app, RenderOptions& options);
 int run_render_command(const RenderOptions& options);

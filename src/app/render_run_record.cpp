@@ -37,6 +37,7 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"accel", options.accel},
           {"update", options.update},
           {"deform", options.deform},
+          {"deform_on", deforms_on_gpu(options) ? "gpu" : "cpu"},
           {"debug_views", options.debug_views},
           {"video", options.video},
           {"timings_only", options.timings_only},

@@ -64,6 +64,11 @@ double FramePipeline::update_ray_tracer(std::span<const std::uint32_t> dirty_mes
   return ray_traced_->update_meshes(*scene_, dirty_meshes);
 }
 
+double FramePipeline::update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes) {
+  if (!ray_traced_ || dirty_meshes.empty()) return 0.0;
+  return ray_traced_->update_meshes_on_device(dirty_meshes);
+}
+
 GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection() : own_reflection_.id(); }
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
@@ -77,7 +82,8 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   if (ray_traced_) {
     // rt: the ray tracer writes every reflective pixel of a cleared image; hybrid: SSR's failed ones.
     if (!ssr_) clear_reflection(own_reflection_.id());
-    ray_trace_stats_ = ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
+    ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
+    ray_traced_a_frame_ = true;
   }
   run_timed_pass(timer, "resolve",
                  [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image()}); });
@@ -85,6 +91,11 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
 
 ImageRgba8 FramePipeline::read_final() const {
   return quantize_to_rgba8(read_texture_rgbaf(resolve_.final_image(), kFinalFormat, width(), height()));
+}
+
+std::optional<RayTraceFrameStats> FramePipeline::ray_trace_stats() {
+  if (!ray_traced_ || !ray_traced_a_frame_) return std::nullopt;
+  return ray_traced_->frame_stats();
 }
 
 std::optional<SsrCounts> FramePipeline::read_counts() const {

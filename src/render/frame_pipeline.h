@@ -66,8 +66,11 @@ public:
   // ... and brings the ray tracer's structures up to date by the settings' UpdatePolicy. Returns its
   // wall time in milliseconds (0 without ray tracing).
   double update_ray_tracer(std::span<const std::uint32_t> dirty_meshes);
+  // The same after a GPU deformer (render/gpu_deformation.h) moved the meshes on the GPU.
+  double update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes);
 
-  // In hybrid and rt modes the CPU waits for the ray list in the middle of the frame.
+  // In hybrid and rt modes with a CPU backend, the CPU waits for the ray list in the middle of the
+  // frame; with a GPU backend (cuda) nothing waits.
   void render(const FrameState& frame, GpuTimer* timer = nullptr);
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
@@ -75,10 +78,13 @@ public:
   // Reflective and SSR-failed pixels of the last frame; nullopt when reflections are off (SSR did not
   // run, so nothing was counted). Waits for the GPU.
   std::optional<SsrCounts> read_counts() const;
-  // Rays traced and the trace time of the last frame; nullopt without ray tracing.
-  const std::optional<RayTraceFrameStats>& ray_trace_stats() const { return ray_trace_stats_; }
+  // Rays traced and the trace time of the last frame; nullopt without ray tracing or before the
+  // first frame. With a GPU backend, waits for the frame's GPU work.
+  std::optional<RayTraceFrameStats> ray_trace_stats();
   // The ray tracer (hybrid and rt modes), for its build/update statistics; null otherwise.
   const rt::RayTracer* ray_tracer() const { return ray_traced_ ? &ray_traced_->tracer() : nullptr; }
+  // A GPU ray tracer's device side (for a GPU deformer); null with a CPU backend or no ray tracing.
+  rt::DeviceTracing* device_tracing() { return ray_traced_ ? ray_traced_->device_tracing() : nullptr; }
   // albedo, normals, positions, depth, shadow mask; with SSR its reflection and failure mask; with ray
   // tracing the traced reflection; with both the combined reflection. Waits for the GPU; see
   // debug_views.h for how each is made viewable.
@@ -98,7 +104,7 @@ private:
   RasterPipeline raster_;
   std::optional<SsrPass> ssr_;
   std::optional<RayTracedReflections> ray_traced_;
-  std::optional<RayTraceFrameStats> ray_trace_stats_;
+  bool ray_traced_a_frame_ = false;
   ResolvePass resolve_;
   // The reflection image when SSR does not make one: all zero (off), or cleared and filled by the
   // ray tracer every frame (rt). In hybrid the ray tracer fills SSR's failed pixels instead.

@@ -25,19 +25,18 @@ HitShadingPass::HitShadingPass(int width, int height, RayHitBuffers& buffers)
   check_gl("hit shading: set-up");
 }
 
-void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t ray_count) {
+void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays) {
   GlPassScope scope("hit_shade");
   if (inputs.scene == nullptr || inputs.shadow_cube == nullptr || inputs.raster == nullptr)
     fail("hit shading: scene, shadow cube and raster settings are required inputs");
   require_texture("hit shading", "reflection", inputs.reflection, kReflectionFormat, width_, height_);
   require_buffer("hit shading", "frame_constants", inputs.frame_constants);
-  if (ray_count > buffers_->capacity())
-    fail("hit shading: {} rays, more than the ray buffers' capacity {}", ray_count, buffers_->capacity());
-  if (ray_count == 0) return;
+  if (max_rays > buffers_->capacity())
+    fail("hit shading: {} rays, more than the ray buffers' capacity {}", max_rays, buffers_->capacity());
+  if (max_rays == 0) return;
 
   const ShadowCubePass& cube = *inputs.shadow_cube;
   const RasterSettings& raster = *inputs.raster;
-  program_.set_uniform("ray_count", static_cast<int>(ray_count));
   program_.set_uniform("far_distance", cube.far_distance());
   program_.set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
   program_.set_uniform("pcf_radius_texels", raster.pcf_radius_texels);
@@ -54,7 +53,7 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t ray_count
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glBindImageTexture(kReflectionUnit, inputs.reflection, 0, GL_FALSE, 0, GL_READ_WRITE, kReflectionFormat);
   program_.use();
-  glDispatchCompute(work_groups(ray_count, kWorkGroupSize), 1, 1);
+  glDispatchCompute(work_groups(max_rays, kWorkGroupSize), 1, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   check_gl("hit shading");
 }

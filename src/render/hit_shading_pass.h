@@ -38,10 +38,12 @@ public:
   // Compiles the shader; throws glint::Error for a non-positive size.
   HitShadingPass(int width, int height, RayHitBuffers& buffers);
 
-  // Shades rays [0, ray_count) of the buffers (their hits written by the tracer) into
-  // inputs.reflection. Inputs are checked (glint::Error naming the input). Ends with a barrier that
-  // makes the reflection image visible to later image loads, fetches and readbacks.
-  void run(const HitShadingInputs& inputs, std::uint32_t ray_count);
+  // Shades the rays of the list (their hits written by the tracer) into inputs.reflection. The
+  // shader reads the list's length from the counter buffer; the dispatch covers `max_rays` (the
+  // count when the host knows it, else the capacity). Inputs are checked (glint::Error naming the
+  // input). Ends with a barrier that makes the reflection image visible to later image loads,
+  // fetches and readbacks.
+  void run(const HitShadingInputs& inputs, std::uint32_t max_rays);
 
 private:
   ShaderProgram program_;

@@ -23,18 +23,27 @@ GlBuffer create_mapped_buffer(std::size_t bytes, GLbitfield access, void** mappe
 
 }  // namespace
 
-RayHitBuffers::RayHitBuffers(std::size_t capacity) : capacity_(capacity) {
+RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory) : capacity_(capacity), memory_(memory) {
   if (capacity == 0) fail("ray buffers: capacity must be at least one ray");
   void* mapped = nullptr;
-  rays_ = create_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped, "ray");
-  mapped_rays_ = static_cast<accel::Ray*>(mapped);
-  hits_ = create_mapped_buffer(capacity * sizeof(accel::Hit), GL_MAP_WRITE_BIT, &mapped, "hit");
-  mapped_hits_ = static_cast<accel::Hit*>(mapped);
+  if (memory == RayHitMemory::host_mapped) {
+    rays_ = create_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped, "ray");
+    mapped_rays_ = static_cast<accel::Ray*>(mapped);
+    hits_ = create_mapped_buffer(capacity * sizeof(accel::Hit), GL_MAP_WRITE_BIT, &mapped, "hit");
+    mapped_hits_ = static_cast<accel::Hit*>(mapped);
+  } else {
+    rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
+    hits_ = create_buffer(capacity * sizeof(accel::Hit), nullptr, 0);
+  }
   counters_readback_ = create_mapped_buffer(2 * sizeof(std::uint32_t), GL_MAP_READ_BIT, &mapped, "counter");
   mapped_counters_ = static_cast<const std::uint32_t*>(mapped);
   pixels_ = create_buffer(capacity * sizeof(std::uint32_t), nullptr, 0);
   counters_ = create_buffer(2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
   check_gl("ray buffers: create");
+}
+
+RayHitBuffers::~RayHitBuffers() {
+  if (counts_fence_ != nullptr) glDeleteSync(counts_fence_);
 }
 
 void RayHitBuffers::reset_counters() {
@@ -50,11 +59,23 @@ void RayHitBuffers::bind() const {
 }
 
 RayListCounts RayHitBuffers::finish_ray_list() {
+  request_counts();
+  return read_requested_counts();
+}
+
+void RayHitBuffers::request_counts() {
   // Shader writes to a persistently mapped buffer reach the CPU only after this barrier and a fence.
   glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glCopyNamedBufferSubData(counters_.id(), counters_readback_.id(), 0, 0, 2 * sizeof(std::uint32_t));
-  GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  if (fence == nullptr) fail("ray buffers: glFenceSync failed");
+  if (counts_fence_ != nullptr) glDeleteSync(counts_fence_);
+  counts_fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  if (counts_fence_ == nullptr) fail("ray buffers: glFenceSync failed");
+}
+
+RayListCounts RayHitBuffers::read_requested_counts() {
+  GLsync fence = counts_fence_;
+  if (fence == nullptr) fail("ray buffers: counters read without request_counts()");
+  counts_fence_ = nullptr;
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
   GLenum status = GL_TIMEOUT_EXPIRED;
   while (status == GL_TIMEOUT_EXPIRED && std::chrono::steady_clock::now() < give_up)
@@ -70,11 +91,13 @@ RayListCounts RayHitBuffers::finish_ray_list() {
 }
 
 std::span<const accel::Ray> RayHitBuffers::rays(std::size_t count) const {
+  if (memory_ != RayHitMemory::host_mapped) fail("ray buffers: rays in device memory cannot be read by the CPU");
   if (count > capacity_) fail("ray buffers: {} rays asked of a list of capacity {}", count, capacity_);
   return {mapped_rays_, count};
 }
 
 std::span<accel::Hit> RayHitBuffers::hits(std::size_t count) {
+  if (memory_ != RayHitMemory::host_mapped) fail("ray buffers: hits in device memory cannot be written by the CPU");
   if (count > capacity_) fail("ray buffers: {} hits asked of a list of capacity {}", count, capacity_);
   return {mapped_hits_, count};
 }

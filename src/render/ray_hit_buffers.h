@@ -1,8 +1,11 @@
 #pragma once
-// The buffers through which rays and hit records move between GL and a CPU ray tracer. They are
-// created once, at a capacity of one ray per pixel, with immutable storage and mapped persistently
-// (GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT), so a frame allocates nothing and copies nothing but
-// the two counters:
+// The buffers through which rays and hit records move between GL and a ray tracer, created once at
+// a capacity of one ray per pixel, so a frame allocates nothing. Two kinds of memory:
+//  - host_mapped (CPU backends): rays and hits live in host memory, mapped persistently
+//    (GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT), so the tracer reads and writes them in place and
+//    a frame copies nothing but the two counters;
+//  - device (GPU backends): rays and hits stay in GPU memory, shared with CUDA (GlBufferInterop),
+//    and the counters are read back only after the frame, for statistics.
 //   rays     (kRayBinding):        accel::Ray[capacity]  the ray-list pass writes, the CPU reads
 //   pixels   (kRayPixelBinding):   uint[capacity]        y * width + x of ray i; GPU only
 //   hits     (kHitBinding):        accel::Hit[capacity]  the CPU tracer writes, hit shading reads
@@ -25,10 +28,15 @@ struct RayListCounts {
   std::uint32_t reflective = 0;  // reflective pixels it saw (rays == reflective in rt mode)
 };
 
+enum class RayHitMemory { host_mapped, device };
+
 class RayHitBuffers {
 public:
   // Needs a current GL context; throws glint::Error for capacity 0.
-  explicit RayHitBuffers(std::size_t capacity);
+  explicit RayHitBuffers(std::size_t capacity, RayHitMemory memory = RayHitMemory::host_mapped);
+  ~RayHitBuffers();
+  RayHitBuffers(const RayHitBuffers&) = delete;  // owns a fence and mapped pointers
+  RayHitBuffers& operator=(const RayHitBuffers&) = delete;
 
   // Zeroes the device counters (before the ray-list pass).
   void reset_counters();
@@ -40,15 +48,29 @@ public:
   // for a minute) and returns them. The rays are readable through rays() afterwards.
   RayListCounts finish_ray_list();
 
-  // The first `count` rays / hits of the mapped buffers; glint::Error beyond the capacity.
+  // The same in two halves, for GPU backends, whose frame must not wait for the counters:
+  // request_counts() queues their copy behind the GL work issued so far (and a fence);
+  // read_requested_counts() waits for that fence and returns them. glint::Error without a request.
+  void request_counts();
+  RayListCounts read_requested_counts();
+
+  // host_mapped only: the first `count` rays / hits of the mapped buffers; glint::Error beyond the
+  // capacity, or for device memory.
   std::span<const accel::Ray> rays(std::size_t count) const;
   std::span<accel::Hit> hits(std::size_t count);
 
   std::size_t capacity() const { return capacity_; }
+  RayHitMemory memory() const { return memory_; }
   GLuint pixel_buffer() const { return pixels_.id(); }
+  // For sharing with CUDA (device memory).
+  GLuint ray_buffer() const { return rays_.id(); }
+  GLuint hit_buffer() const { return hits_.id(); }
+  GLuint counter_buffer() const { return counters_.id(); }
 
 private:
   std::size_t capacity_;
+  RayHitMemory memory_;
+  GLsync counts_fence_ = nullptr;  // set by request_counts()
   GlBuffer rays_, pixels_, hits_, counters_, counters_readback_;
   accel::Ray* mapped_rays_ = nullptr;
   accel::Hit* mapped_hits_ = nullptr;

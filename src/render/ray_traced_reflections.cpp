@@ -21,6 +21,10 @@ std::unique_ptr<rt::RayTracer> built_tracer(const Scene& scene, const RayTracing
   return tracer;
 }
 
+RayHitMemory buffer_memory(rt::RayTracer& tracer) {
+  return tracer.device_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
+}
+
 std::size_t pixel_count(int width, int height) {
   if (width <= 0 || height <= 0) fail("ray tracing: invalid frame size {}x{}", width, height);
   return static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -39,9 +43,16 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
                                            const RayTracingSettings& settings)
     : settings_(settings),
       tracer_(built_tracer(scene, settings)),
-      buffers_(pixel_count(width, height)),
+      device_(tracer_->device_tracing()),
+      buffers_(pixel_count(width, height), buffer_memory(*tracer_)),
       ray_list_(width, height, buffers_),
       hit_shading_(width, height, buffers_) {
+  if (device_) {
+    const cuda::InteropBuffer shared[] = {{buffers_.ray_buffer(), cuda::InteropAccess::read_only},
+                                          {buffers_.hit_buffer(), cuda::InteropAccess::write_discard},
+                                          {buffers_.counter_buffer(), cuda::InteropAccess::read_only}};
+    interop_.emplace(shared);
+  }
   const float diagonal = length(scene.world_bounds().extent());
   ray_list_.set_origin_offset(settings.origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f));
 }
@@ -52,27 +63,54 @@ double RayTracedReflections::update_meshes(const Scene& scene, std::span<const s
   return milliseconds_since(start);
 }
 
-RayTraceFrameStats RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection,
-                                             GpuTimer* timer) {
+void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer) {
   run_timed_pass(timer, "ray_list", [&] {
     ray_list_.run({raster.albedo_reflectivity(), raster.world_position(), raster.world_normal_roughness(),
                    failure_mask, raster.frame_constants_buffer()});
   });
-  const RayListCounts counts = buffers_.finish_ray_list();
-
-  RayTraceFrameStats stats;
-  stats.rays_traced = counts.rays;
-  stats.reflective_pixels = counts.reflective;
-  const auto trace_start = Clock::now();
-  tracer_->trace_closest(buffers_.rays(counts.rays), buffers_.hits(counts.rays));
-  stats.trace_ms = milliseconds_since(trace_start);
-
+  // A CPU backend needs the list in host memory now; a GPU backend reads the count on the GPU.
+  const RayListCounts host_counts = device_ ? RayListCounts{} : buffers_.finish_ray_list();
+  trace(host_counts);
+  const auto max_rays = static_cast<std::uint32_t>(device_ ? buffers_.capacity() : host_counts.rays);
   run_timed_pass(timer, "hit_shade", [&] {
     hit_shading_.run({&raster.gpu_scene(), &raster.shadow_cube(), &raster.settings(), raster.frame_constants_buffer(),
                       reflection},
-                     counts.rays);
+                     max_rays);
   });
-  return stats;
+  if (device_) buffers_.request_counts();
+}
+
+void RayTracedReflections::trace(RayListCounts host_counts) {
+  if (!device_) {
+    last_stats_ = {host_counts.rays, host_counts.reflective, 0.0};
+    const auto trace_start = Clock::now();
+    tracer_->trace_closest(buffers_.rays(host_counts.rays), buffers_.hits(host_counts.rays));
+    last_stats_.trace_ms = milliseconds_since(trace_start);
+    stats_pending_ = false;
+    return;
+  }
+  // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the
+  // trace. Both happen on the GPU: the host only enqueues.
+  cuda::ScopedInteropMap mapped(*interop_, device_->stream());
+  device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
+                                mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(buffers_.capacity()));
+  stats_pending_ = true;
+}
+
+double RayTracedReflections::update_meshes_on_device(std::span<const std::uint32_t> dirty_meshes) {
+  if (!device_) fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
+  const auto start = Clock::now();
+  device_->update_device(dirty_meshes, settings_.update);
+  return milliseconds_since(start);
+}
+
+RayTraceFrameStats RayTracedReflections::frame_stats() {
+  if (stats_pending_) {
+    const RayListCounts counts = buffers_.read_requested_counts();
+    last_stats_ = {counts.rays, counts.reflective, device_->last_trace_ms()};
+    stats_pending_ = false;
+  }
+  return last_stats_;
 }
 
 }  // namespace glint::render

@@ -2,14 +2,17 @@
 // The ray-traced complement of the hybrid renderer (the paper's Sec. III-C), as three steps around a
 // RayTracer backend:
 //   1. RayListPass (GPU): the pixels that need a ray (SSR-failed, or every reflective one in rt mode)
-//      become a list of mirror rays in persistently mapped memory;
-//   2. the backend (CPU: cpu or embree) traces the list in place into mapped hit records;
+//      become a list of mirror rays;
+//   2. the backend traces the list into hit records: a CPU backend (cpu, embree) in persistently
+//      mapped host memory, after the CPU waited for the list; a GPU backend (cuda) in GPU memory
+//      shared with CUDA, with no host wait and no copy (rt::DeviceTracing, cuda::GlBufferInterop);
 //   3. HitShadingPass (GPU): the hits are shaded like the raster path into the reflection image.
 // Deforming meshes reach the backend through update_meshes() with the chosen UpdatePolicy.
 //
 //   RayTracedReflections traced(scene, 1280, 720, settings);      // builds the structures
 //   traced.update_meshes(scene, dirty);                            // after a deformation
 //   auto stats = traced.run(raster, ssr.failure_mask(), ssr.reflection(), &timer);
+#include "cuda/gl_buffer_interop.h"
 #include "gl/gpu_timer.h"
 #include "render/hit_shading_pass.h"
 #include "render/raster_pipeline.h"
@@ -22,6 +25,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -41,7 +45,9 @@ struct RayTracingSettings {
 struct RayTraceFrameStats {
   std::uint32_t rays_traced = 0;        // rays in the list, all traced
   std::uint32_t reflective_pixels = 0;  // reflective pixels the ray-list pass saw
-  double trace_ms = 0.0;                // the backend's trace_closest, wall clock (CPU)
+  // CPU backends: the backend's trace_closest, wall clock; GPU backends: the trace kernel's GPU
+  // time (CUDA events).
+  double trace_ms = 0.0;
 };
 
 class RayTracedReflections {
@@ -53,19 +59,36 @@ public:
   // After the vertices of `dirty_meshes` moved in `scene`: brings the backend's structures up to
   // date by the settings' policy. Returns the wall time in milliseconds.
   double update_meshes(const Scene& scene, std::span<const std::uint32_t> dirty_meshes);
+  // The same after a GPU deformer rewrote the GPU backend's device positions (DeviceTracing):
+  // nothing comes from the host. glint::Error with a CPU backend.
+  double update_meshes_on_device(std::span<const std::uint32_t> dirty_meshes);
 
   // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
-  // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GPU steps
-  // are timed as "ray_list" and "hit_shade"; the CPU waits for the ray list in between.
-  RayTraceFrameStats run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer);
+  // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GL steps
+  // are timed as "ray_list" and "hit_shade"; with a CPU backend the CPU waits for the ray list in
+  // between, with a GPU backend nothing waits. The frame's statistics come from frame_stats().
+  void run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer);
+
+  // The statistics of the last run(); with a GPU backend, waits for that frame's GPU work first.
+  RayTraceFrameStats frame_stats();
 
   const rt::RayTracer& tracer() const { return *tracer_; }
+  rt::RayTracer& tracer() { return *tracer_; }
+  // The GPU backend's device side, or null for a CPU backend.
+  rt::DeviceTracing* device_tracing() { return device_; }
   const RayTracingSettings& settings() const { return settings_; }
 
 private:
   RayTracingSettings settings_;
+  // Traces this frame's list; CPU backends: returns the stats, GPU backends: leaves them pending.
+  void trace(RayListCounts host_counts);
+
   std::unique_ptr<rt::RayTracer> tracer_;
+  rt::DeviceTracing* device_;  // tracer_'s device side, or null
   RayHitBuffers buffers_;
+  std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only
+  RayTraceFrameStats last_stats_;
+  bool stats_pending_ = false;  // GPU backend: last_stats_ still needs the counters and the trace time
   RayListPass ray_list_;
   HitShadingPass hit_shading_;
 };

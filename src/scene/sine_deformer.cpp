@@ -1,5 +1,7 @@
 #include "scene/sine_deformer.h"
 
+#include "scene/sine_deform_math.h"
+
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>
@@ -59,14 +61,9 @@ void SineDeformer::apply(Mesh& mesh, float time_seconds) {
     fail("mesh '{}': the sine deformer was built for {} triangles, the mesh has {}", mesh_name_,
          indices_.size() / 3, mesh.indices.size() / 3);
 
-  const SineDeform& p = parameters_;
-  const float phase = p.speed * time_seconds;
-  parallel_range(rest_positions_.size(), [&](std::size_t v) {
-    const vec3& rest = rest_positions_[v];
-    vec3 moved = rest;
-    moved[p.displace_axis] = rest[p.displace_axis] + p.amplitude * std::sin(p.frequency * rest[p.wave_axis] + phase);
-    mesh.positions[v] = moved;
-  });
+  const float phase = parameters_.speed * time_seconds;
+  parallel_range(rest_positions_.size(),
+                 [&](std::size_t v) { mesh.positions[v] = sine_displaced(rest_positions_[v], parameters_, phase); });
 
   // Smooth normals as compute_smooth_normals makes them (area-weighted face sum, +y where it
   // vanishes), but gathered per vertex so both loops run in parallel without races.
@@ -74,14 +71,13 @@ void SineDeformer::apply(Mesh& mesh, float time_seconds) {
   parallel_range(face_normals.size(), [&](std::size_t t) {
     const vec3 a = mesh.positions[indices_[3 * t]], b = mesh.positions[indices_[3 * t + 1]],
                c = mesh.positions[indices_[3 * t + 2]];
-    face_normals[t] = glm::cross(b - a, c - a);  // length = twice the area: the weight
+    face_normals[t] = weighted_face_normal(a, b, c);
   });
   mesh.normals.resize(rest_positions_.size());
   parallel_range(rest_positions_.size(), [&](std::size_t v) {
     vec3 sum(0.0f);
     for (std::size_t k = vertex_offsets_[v]; k < vertex_offsets_[v + 1]; ++k) sum += face_normals[vertex_triangles_[k]];
-    const float length = glm::length(sum);
-    mesh.normals[v] = (length > 0.0f && std::isfinite(length)) ? sum / length : vec3(0.0f, 1.0f, 0.0f);
+    mesh.normals[v] = smooth_normal_from_sum(sum);
   });
 }
 
@@ -97,12 +93,17 @@ SceneDeformers::SceneDeformers(const Scene& scene)
   }
 }
 
+float SceneDeformers::time_at(int frame) const {
+  if (frame < 0) fail("deformers: frame must be >= 0, got {}", frame);
+  // The same conversion as WalkthroughAnimation::at, so geometry and FrameState agree on the time.
+  return static_cast<float>(double(frame) / double(frames_per_second_));
+}
+
 std::vector<std::uint32_t> SceneDeformers::apply(Scene& scene, int frame) {
   if (frame < 0) fail("deformers: frame must be >= 0, got {}", frame);
   if (scene.meshes.size() != scene_mesh_count_)
     fail("deformers: built for a scene with {} meshes, given one with {}", scene_mesh_count_, scene.meshes.size());
-  // The same conversion as WalkthroughAnimation::at, so geometry and FrameState agree on the time.
-  const float time_seconds = static_cast<float>(double(frame) / double(frames_per_second_));
+  const float time_seconds = time_at(frame);
   for (std::size_t k = 0; k < deformers_.size(); ++k) deformers_[k].apply(scene.meshes[mesh_indices_[k]], time_seconds);
   return mesh_indices_;
 }

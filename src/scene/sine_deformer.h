@@ -25,6 +25,12 @@ public:
 
   const SineDeform& parameters() const { return parameters_; }
   std::size_t vertex_count() const { return rest_positions_.size(); }
+  // What a GPU deformer uploads to pose the mesh the same way (cuda/gpu_sine_deformer.h).
+  const std::string& mesh_name() const { return mesh_name_; }
+  const std::vector<vec3>& rest_positions() const { return rest_positions_; }
+  const std::vector<std::uint32_t>& indices() const { return indices_; }
+  const std::vector<std::size_t>& vertex_offsets() const { return vertex_offsets_; }
+  const std::vector<std::uint32_t>& vertex_triangles() const { return vertex_triangles_; }
 
 private:
   std::string mesh_name_;  // for error messages
@@ -55,7 +61,10 @@ public:
 
   // The indices of the meshes this deforms (what apply returns).
   const std::vector<std::uint32_t>& meshes() const { return mesh_indices_; }
+  const std::vector<SineDeformer>& deformers() const { return deformers_; }  // parallel to meshes()
   bool empty() const { return deformers_.empty(); }
+  // The time apply(frame) poses the meshes at (seconds).
+  float time_at(int frame) const;
 
 private:
   std::vector<std::uint32_t> mesh_indices_;

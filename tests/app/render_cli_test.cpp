@@ -2,6 +2,7 @@
 // leave nothing behind.
 #include "app/cli_runner.h"
 #include "app/video_writer.h"
+#include "cuda/device_query.h"
 #include "core/image.h"
 #include "support/temp_folder.h"
 #include "../gl/gl_test_context.h"
@@ -142,15 +143,35 @@ TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
   EXPECT_EQ(run_glint("render atrium-simple --backend optix9 --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --accel octree --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --update sometimes --out " + quoted(out)).exit_code, 2);
-  for (const char* conflict : {"--backend embree --accel lbvh", "--accel sbvh --update refit"}) {
+  EXPECT_EQ(run_glint("render atrium-simple --deform-on tpu --out " + quoted(out)).exit_code, 2);
+  for (const char* conflict : {"--backend embree --accel lbvh", "--accel sbvh --update refit",
+                               "--backend cuda --accel sbvh --update auto", "--deform-on gpu --backend cpu",
+                               "--deform-on gpu --backend embree --reflections rt"}) {
     const CliResult r = run_glint(std::string("render atrium-simple ") + conflict + " --out " + quoted(out));
     EXPECT_EQ(r.exit_code, 1) << conflict;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << conflict;
   }
+  const CliResult gpu_deform = run_glint("render atrium-simple --deform-on gpu --backend cpu --out " + quoted(out));
+  EXPECT_NE(gpu_deform.err.find("--backend cuda"), std::string::npos) << gpu_deform.err;
   const CliResult missing = run_glint("render /nonexistent/scene.obj --out " + quoted(out));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/scene.obj"), std::string::npos);
   EXPECT_FALSE(fs::exists(out));
+}
+
+TEST_F(RenderCli, CudaBackendWithoutAGpuIsOneClearLine) {
+  if (cuda_gpu_present()) GTEST_SKIP() << "this machine has a CUDA GPU (the cuda backend runs instead)";
+  TempFolder folder;
+  const fs::path out = folder.path() / "cuda";
+  for (const char* flags : {"--backend cuda", "--reflections ssr --deform-on gpu"}) {
+    const CliResult r = run_glint(std::string("render atrium-simple --frames 2100 --width 32 --height 18 ") + flags +
+                                  " --out " + quoted(out));
+    EXPECT_EQ(r.exit_code, 1) << flags;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("CUDA"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << flags;
+  }
 }
 
 }  // namespace

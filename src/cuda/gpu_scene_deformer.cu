@@ -1,0 +1,102 @@
+#include "cuda/gpu_scene_deformer.h"
+
+#include "cuda/cuda_check.h"
+#include "cuda/device_query.h"
+#include "cuda/gl_buffer_interop.h"
+#include "cuda/gpu_sine_deformer.h"
+
+#include <optional>
+#include <string>
+
+namespace glint::cuda {
+
+struct GpuSceneDeformer::State {
+  const SceneDeformers* deformers = nullptr;
+  std::vector<GpuSineDeformer> meshes;  // parallel to deformers->meshes()
+  std::vector<uint32_t> base_vertex;    // per scene mesh
+  std::optional<GlBufferInterop> gl_vertices;
+  rt::DeviceTracing* tracer = nullptr;
+  cudaStream_t stream = nullptr;
+  bool owns_stream = false;
+  cudaEvent_t start = nullptr, stop = nullptr;
+  bool timed = false;
+
+  ~State() {
+    if (start) cudaEventDestroy(start);
+    if (stop) cudaEventDestroy(stop);
+    if (owns_stream && stream) cudaStreamDestroy(stream);
+  }
+};
+
+GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers& deformers, std::uint32_t gl_vertex_buffer,
+                                   std::vector<std::uint32_t> base_vertex, rt::DeviceTracing* tracer)
+    : state_(std::make_unique<State>()) {
+  require_cuda_gpu("--deform-on gpu");
+  State& s = *state_;
+  s.deformers = &deformers;
+  s.base_vertex = std::move(base_vertex);
+  s.tracer = tracer;
+  for (std::size_t k = 0; k < deformers.meshes().size(); ++k) {
+    if (gl_vertex_buffer != 0 && deformers.meshes()[k] >= s.base_vertex.size())
+      fail_message("GPU deformer: no GL vertex range for mesh " + std::to_string(deformers.meshes()[k]));
+    s.meshes.emplace_back(deformers.deformers()[k]);
+  }
+  if (gl_vertex_buffer != 0) {
+    const InteropBuffer shared[] = {{gl_vertex_buffer, InteropAccess::read_write}};
+    s.gl_vertices.emplace(shared);
+  }
+  if (tracer) {
+    s.stream = static_cast<cudaStream_t>(tracer->stream());
+  } else {
+    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&s.stream, cudaStreamNonBlocking));
+    s.owns_stream = true;
+  }
+  GLINT_CUDA_CHECK(cudaEventCreate(&s.start));
+  GLINT_CUDA_CHECK(cudaEventCreate(&s.stop));
+}
+
+GpuSceneDeformer::~GpuSceneDeformer() = default;
+
+std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
+  State& s = *state_;
+  const float time_seconds = s.deformers->time_at(frame);
+  GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
+  {
+    std::optional<ScopedInteropMap> mapped;
+    if (s.gl_vertices) mapped.emplace(*s.gl_vertices, s.stream);
+    auto* gl_vertices = mapped ? mapped->pointer<DeformedGlVertex>(0) : nullptr;
+    for (std::size_t k = 0; k < s.meshes.size(); ++k) {
+      const uint32_t mesh = s.deformers->meshes()[k];
+      vec3* positions = s.tracer ? s.tracer->device_positions(mesh) : nullptr;
+      s.meshes[k].apply(time_seconds, positions, gl_vertices ? gl_vertices + s.base_vertex[mesh] : nullptr, s.stream);
+    }
+  }
+  GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
+  s.timed = true;
+  return s.deformers->meshes();
+}
+
+double GpuSceneDeformer::last_apply_ms() {
+  State& s = *state_;
+  if (!s.timed) return 0.0;
+  GLINT_CUDA_CHECK(cudaEventSynchronize(s.stop));
+  float ms = 0.0f;
+  GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, s.start, s.stop));
+  return ms;
+}
+
+GpuPosedMesh pose_mesh_on_gpu(const SineDeformer& deformer, float time_seconds) {
+  require_cuda_gpu("the GPU deformer");
+  GpuSineDeformer gpu(deformer);
+  DeviceBuffer<vec3> positions(gpu.vertex_count());
+  DeviceBuffer<DeformedGlVertex> vertices(gpu.vertex_count());
+  vertices.fill_zero();
+  gpu.apply(time_seconds, positions.data(), vertices.data(), nullptr);
+  GLINT_CUDA_CHECK(cudaDeviceSynchronize());
+  GpuPosedMesh posed;
+  posed.positions = positions.download();
+  for (const DeformedGlVertex& vertex : vertices.download()) posed.normals.emplace_back(vertex.normal_v);
+  return posed;
+}
+
+}  // namespace glint::cuda

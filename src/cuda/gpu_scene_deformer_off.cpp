@@ -1,0 +1,23 @@
+// A build without CUDA: the GPU deformer is unavailable, said at construction.
+#include "cuda/gpu_scene_deformer.h"
+
+#if !GLINT_HAVE_CUDA
+#include "core/error.h"
+
+namespace glint::cuda {
+
+struct GpuSceneDeformer::State {};
+
+GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers&, std::uint32_t, std::vector<std::uint32_t>, rt::DeviceTracing*) {
+  fail("--deform-on gpu: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");
+}
+GpuSceneDeformer::~GpuSceneDeformer() = default;
+std::vector<std::uint32_t> GpuSceneDeformer::apply(int) { return {}; }
+double GpuSceneDeformer::last_apply_ms() { return 0.0; }
+
+GpuPosedMesh pose_mesh_on_gpu(const SineDeformer&, float) {
+  fail("the GPU deformer: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");
+}
+
+}  // namespace glint::cuda
+#endif
