@@ -1,0 +1,63 @@
+#pragma once
+// GPU BVH construction and refit over primitive boxes that already live in device memory (triangle
+// boxes for a BLAS, instance world boxes for a TLAS), so a deforming mesh is rebuilt or refitted
+// every frame without a host round trip. The output is a GpuBvh in accel::BvhNode's flat layout
+// (children after their parent, siblings adjacent), so accel/traverse.h walks it unchanged and a
+// downloaded copy passes accel::validate_bvh.
+//
+// Everything here is asynchronous on the given stream: calls enqueue work and return; once the
+// builder's scratch and the output are large enough, a rebuild allocates nothing.
+// CUDA-only header: include it from .cu files.
+#include "accel/build_options.h"
+#include "accel/triangle_mesh.h"
+#include "cuda/gpu_bvh.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace glint::cuda {
+
+enum class GpuBvhBuilder {
+  lbvh,  // Karras 2012: 30-bit Morton codes + primitive index as 64-bit keys, CUB radix sort, radix tree
+  ploc,  // Meister & Bittner 2018: parallel locally-ordered clustering in Morton order
+};
+
+// "lbvh", "ploc".
+const char* gpu_builder_name(GpuBvhBuilder builder);
+
+// One builder with its scratch memory, kept between builds (one per structure rebuilt per frame).
+class GpuBvhBuild {
+public:
+  // options.ploc_radius is used by ploc; leaves hold one primitive.
+  explicit GpuBvhBuild(GpuBvhBuilder builder, const accel::BuildOptions& options = {});
+  ~GpuBvhBuild();
+  GpuBvhBuild(GpuBvhBuild&&) noexcept;
+  GpuBvhBuild& operator=(GpuBvhBuild&&) noexcept;
+
+  // Builds `out` (nodes, prim_indices, parents; refittable) over prim_boxes[0, count) on `stream`.
+  // count == 0 gives an empty BVH. out.depth is set to a bound known on the host (lbvh: key bits + 1;
+  // ploc: not known without a read back, set to accel::kMaxBvhDepth); the exact depth is
+  // measure_depth()'s.
+  void build(const Aabb* prim_boxes, uint32_t count, GpuBvh& out, cudaStream_t stream);
+
+  GpuBvhBuilder builder() const;
+
+private:
+  struct Scratch;
+  GpuBvhBuilder builder_;
+  accel::BuildOptions options_;
+  std::unique_ptr<Scratch> scratch_;
+};
+
+// boxes[i] = bounds of mesh.triangle(i) for every triangle (device memory on both sides).
+void compute_triangle_boxes(const accel::TriangleMesh& device_mesh, Aabb* boxes, cudaStream_t stream);
+
+// Bottom-up box update after the primitives moved (same count, same topology): every leaf's box from
+// prim_boxes, every interior box from its children, through bvh.parents and one atomic counter per
+// node (`counters`, resized to the node count and reused).
+void refit_gpu(GpuBvh& bvh, const Aabb* prim_boxes, DeviceBuffer<uint32_t>& counters, cudaStream_t stream);
+
+// The tree's depth (levels, root = 1), computed on the GPU and read back (waits for the stream).
+uint32_t measure_depth(const GpuBvh& bvh, cudaStream_t stream);
+
+}  // namespace glint::cuda
