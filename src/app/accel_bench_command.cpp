@@ -46,11 +46,18 @@ CLI::Validator validator_of(Parse parse, const char* description) {
 
 }  // namespace
 
-std::vector<std::string> parse_structure_list(const std::string& text) {
+std::vector<std::string> parse_structure_list(const std::string& text, const std::string& backend) {
   const std::vector<std::string> known = accel_bench::candidate_names();
+  const std::vector<std::string> cuda = accel_bench::cuda_candidate_names();
+  const std::vector<std::string> embree = accel_bench::embree_candidate_names();
+  if (backend != "cpu" && backend != "cuda") fail("unknown accel-bench backend \"{}\" (known: cpu, cuda)", backend);
   std::vector<std::string> names;
   if (text == "all") {
-    names = known;
+    for (const std::string& name : known) {
+      const bool is_cuda = std::find(cuda.begin(), cuda.end(), name) != cuda.end();
+      const bool is_embree = std::find(embree.begin(), embree.end(), name) != embree.end();
+      if (!is_embree && is_cuda == (backend == "cuda")) names.push_back(name);
+    }
   } else {
     for (const std::string& name : split_commas(text)) {
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -58,8 +65,8 @@ std::vector<std::string> parse_structure_list(const std::string& text) {
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
   }
-  for (const std::string& embree : accel_bench::embree_candidate_names())
-    if (std::find(names.begin(), names.end(), embree) == names.end()) names.push_back(embree);
+  for (const std::string& name : embree)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   return names;
 }
 
@@ -89,7 +96,13 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
                         ". The Embree ones are always added. The first one traced is the reference the others' hits "
                         "are checked against")
       ->capture_default_str()
-      ->check(validator_of(parse_structure_list, "BUILDERS"));
+      ->check(validator_of([](const std::string& text) { return parse_structure_list(text); }, "BUILDERS"));
+  bench->add_option("--backend", options.backend,
+                    "What '--builders all' runs: cpu (glint's CPU structures) or cuda (every builder's BVH on the GPU, "
+                    "traced by the cuda backend's kernel; GPU times, see docs/accel-bench.md). Named structures of "
+                    "either kind can be mixed in --builders")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cpu", "cuda"}));
   bench->add_option("--rays", options.rays,
                     "Rays to trace: 'primary' (one per pixel from the walkthrough camera at each frame), 'reflection' "
                     "(mirror reflections of the primary rays at surfaces with reflectivity > 0) or 'random' (uniform "
@@ -124,7 +137,7 @@ int run_accel_bench_command(const AccelBenchOptions& options) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
 
   accel_bench::BenchOptions bench;
-  bench.structures = parse_structure_list(options.builders);
+  bench.structures = parse_structure_list(options.builders, options.backend);
   bench.rays = accel_bench::parse_ray_kind(options.rays);
   bench.frames = parse_frame_list(options.frames);
   bench.width = options.width;

@@ -1,6 +1,7 @@
 #include "rt/ray_tracer.h"
 
 #include "core/error.h"
+#include "cuda/cuda_ray_tracer.h"
 #include "rt/cpu_ray_tracer.h"
 #include "rt/embree_ray_tracer.h"
 
@@ -27,7 +28,8 @@ UpdatePolicy parse_update_policy(std::string_view name) {
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend) {
   if (backend == "cpu") return std::make_unique<CpuRayTracer>();
   if (backend == "embree") return std::make_unique<EmbreeRayTracer>();
-  fail("unknown ray tracing backend \"{}\" (known: cpu, embree)", backend);
+  if (backend == "cuda") return cuda::make_cuda_ray_tracer();
+  fail("unknown ray tracing backend \"{}\" (known: cpu, embree, cuda)", backend);
 }
 
 }  // namespace glint::rt

@@ -118,7 +118,8 @@ public:
   virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
 };
 
-// "cpu" or "embree"; glint::Error listing the known names otherwise.
+// "cpu", "embree" or "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU);
+// glint::Error listing the known names otherwise.
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
 
 }  // namespace glint::rt
