@@ -14,34 +14,6 @@
 namespace glint::accel {
 namespace {
 
-// Spreads the low 10 bits of v so that two zero bits follow each: b9..b0 -> b9 0 0 b8 0 0 ... b0.
-uint32_t spread_bits_10(uint32_t v) {
-  v &= 0x3ffu;
-  v = (v | (v << 16)) & 0x030000ffu;
-  v = (v | (v << 8)) & 0x0300f00fu;
-  v = (v | (v << 4)) & 0x030c30c3u;
-  v = (v | (v << 2)) & 0x09249249u;
-  return v;
-}
-
-// The same for the low 21 bits into a 64-bit word.
-uint64_t spread_bits_21(uint64_t v) {
-  v &= 0x1fffffull;
-  v = (v | (v << 32)) & 0x001f00000000ffffull;
-  v = (v | (v << 16)) & 0x001f0000ff0000ffull;
-  v = (v | (v << 8)) & 0x100f00f00f00f00full;
-  v = (v | (v << 4)) & 0x10c30c30c30c30c3ull;
-  v = (v | (v << 2)) & 0x1249249249249249ull;
-  return v;
-}
-
-uint32_t quantise(float unit, uint32_t cells) {
-  // Clamped in float before converting (converting an out-of-range float is undefined).
-  const float scaled = unit * static_cast<float>(cells);
-  if (!(scaled > 0.0f)) return 0;
-  return scaled < static_cast<float>(cells - 1) ? static_cast<uint32_t>(scaled) : cells - 1;
-}
-
 struct CentroidBounds {
   Aabb box;
   bool finite = true;
@@ -71,11 +43,7 @@ UnitMapping unit_mapping(std::span<const vec3> centroids) {
         return a;
       });
   if (!bounds.finite) fail("accel: Morton codes: a primitive centroid is not finite");
-  UnitMapping mapping{bounds.box.min, vec3(0.0f)};
-  const vec3 extent = bounds.box.extent();
-  for (int axis = 0; axis < 3; ++axis)
-    if (extent[axis] > 0.0f && std::isfinite(1.0f / extent[axis])) mapping.scale[axis] = 1.0f / extent[axis];
-  return mapping;
+  return UnitMapping{bounds.box.min, unit_cube_scale(bounds.box.extent())};
 }
 
 template <typename Encode>
@@ -109,16 +77,6 @@ size_t count_collisions(const MortonOrder& order, std::span<const vec3> centroid
 }
 
 }  // namespace
-
-uint32_t morton30(const vec3& unit) {
-  return spread_bits_10(quantise(unit.x, 1u << 10)) | (spread_bits_10(quantise(unit.y, 1u << 10)) << 1) |
-         (spread_bits_10(quantise(unit.z, 1u << 10)) << 2);
-}
-
-uint64_t morton63(const vec3& unit) {
-  return spread_bits_21(quantise(unit.x, 1u << 21)) | (spread_bits_21(quantise(unit.y, 1u << 21)) << 1) |
-         (spread_bits_21(quantise(unit.z, 1u << 21)) << 2);
-}
 
 MortonOrder sort_by_morton(std::span<const vec3> centroids) {
   const UnitMapping mapping = unit_mapping(centroids);

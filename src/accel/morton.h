@@ -3,6 +3,7 @@
 // trbvh, ploc) start from: quantise each centroid in the centroid bounds, interleave the bits of
 // x, y and z (x in the lowest of every three bits), sort the codes.
 #include "accel/build_options.h"
+#include "accel/morton_code.h"
 #include "core/math.h"
 
 #include <cstdint>
@@ -11,11 +12,8 @@
 
 namespace glint::accel {
 
-// 10 bits per axis: a 30-bit code. `unit` is a point in [0, 1]^3 (clamped: outside values take the
-// nearest cell), each axis quantised to floor(c * 1024) capped at 1023.
-uint32_t morton30(const vec3& unit);
-// 21 bits per axis: a 63-bit code, quantised the same way to 2^21 cells per axis.
-uint64_t morton63(const vec3& unit);
+// morton30 (10 bits per axis) and morton63 (21 bits per axis) of a point in [0, 1]^3 are in
+// accel/morton_code.h, shared with the GPU builders.
 
 // Centroids sorted along the Z curve. codes[i] is the code of primitive prims[i]; equal codes keep
 // the primitives in index order (the radix sort is stable), so the result is deterministic.

@@ -11,19 +11,12 @@
 #include "accel/build_options.h"
 #include "accel/triangle_mesh.h"
 #include "cuda/gpu_bvh.h"
+#include "cuda/gpu_bvh_host.h"  // GpuBvhBuilder, gpu_builder_name
 
 #include <cstdint>
 #include <memory>
 
 namespace glint::cuda {
-
-enum class GpuBvhBuilder {
-  lbvh,  // Karras 2012: 30-bit Morton codes + primitive index as 64-bit keys, CUB radix sort, radix tree
-  ploc,  // Meister & Bittner 2018: parallel locally-ordered clustering in Morton order
-};
-
-// "lbvh", "ploc".
-const char* gpu_builder_name(GpuBvhBuilder builder);
 
 // One builder with its scratch memory, kept between builds (one per structure rebuilt per frame).
 class GpuBvhBuild {
@@ -35,9 +28,10 @@ public:
   GpuBvhBuild& operator=(GpuBvhBuild&&) noexcept;
 
   // Builds `out` (nodes, prim_indices, parents; refittable) over prim_boxes[0, count) on `stream`.
-  // count == 0 gives an empty BVH. out.depth is set to a bound known on the host (lbvh: key bits + 1;
-  // ploc: not known without a read back, set to accel::kMaxBvhDepth); the exact depth is
-  // measure_depth()'s.
+  // count == 0 gives an empty BVH; count must be below 2^31. out.depth is set to a bound known on
+  // the host, never above accel::kMaxBvhDepth (lbvh: 62, from the key bits; ploc: kMaxBvhDepth,
+  // which its iteration loop enforces; both at most count); the exact depth is measure_depth()'s.
+  // ploc reads a cluster count back after each of its iterations, so it waits for the stream.
   void build(const Aabb* prim_boxes, uint32_t count, GpuBvh& out, cudaStream_t stream);
 
   GpuBvhBuilder builder() const;

@@ -1,0 +1,146 @@
+#include "cuda/gpu_bvh_host.h"
+
+#include "cuda/device_query.h"
+#include "cuda/gpu_bvh_build.h"
+#include "cuda/gpu_mesh.h"
+
+#include <string>
+
+namespace glint::cuda {
+namespace {
+
+// A stream and two events of its own, so the work of one session never waits on another's.
+struct TimedStream {
+  cudaStream_t stream = nullptr;
+  cudaEvent_t start = nullptr, stop = nullptr;
+
+  TimedStream() {
+    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking));
+    GLINT_CUDA_CHECK(cudaEventCreate(&start));
+    GLINT_CUDA_CHECK(cudaEventCreate(&stop));
+  }
+  ~TimedStream() {  // not checked: a destructor, and failures here leak only
+    if (start) cudaEventDestroy(start);
+    if (stop) cudaEventDestroy(stop);
+    if (stream) cudaStreamDestroy(stream);
+  }
+  TimedStream(const TimedStream&) = delete;
+  TimedStream& operator=(const TimedStream&) = delete;
+
+  // Milliseconds between the events, once the stream reached the second.
+  double elapsed_ms() const {
+    GLINT_CUDA_CHECK(cudaEventSynchronize(stop));
+    float ms = 0.0f;
+    GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
+    return ms;
+  }
+};
+
+// The mesh, its boxes and a BVH over them on the GPU: what the session and the one-shot
+// functions share.
+struct DeviceStructure {
+  TimedStream timing;
+  GpuMesh mesh;
+  DeviceBuffer<Aabb> boxes;
+  GpuBvh bvh;
+  DeviceBuffer<uint32_t> refit_counters;
+  std::string builder_name;  // of the BVH in `bvh`
+
+  // Uploads the vertices and computes one box per triangle (on the stream).
+  void set_mesh(const accel::TriangleMesh& host_mesh) {
+    mesh.upload(host_mesh, timing.stream);
+    boxes.resize(host_mesh.triangle_count);
+    compute_triangle_boxes(mesh.view(), boxes.data(), timing.stream);
+  }
+
+  double refit(const accel::TriangleMesh& moved_host_mesh) {
+    if (!bvh.refittable)
+      fail_message("refit on the GPU: the BVH (builder '" + builder_name + "') is not refittable; rebuild it instead");
+    if (moved_host_mesh.triangle_count != bvh.prim_indices.size())
+      fail_message("refit on the GPU: " + std::to_string(moved_host_mesh.triangle_count) +
+                   " triangles for a BVH over " + std::to_string(bvh.prim_indices.size()) + " primitives");
+    set_mesh(moved_host_mesh);
+    GLINT_CUDA_CHECK(cudaEventRecord(timing.start, timing.stream));
+    refit_gpu(bvh, boxes.data(), refit_counters, timing.stream);
+    GLINT_CUDA_CHECK(cudaEventRecord(timing.stop, timing.stream));
+    return timing.elapsed_ms();
+  }
+
+  accel::Bvh download() const {
+    const uint32_t depth = measure_depth(bvh, timing.stream);  // waits for the stream
+    accel::Bvh host = bvh.download(builder_name.c_str());
+    host.depth = depth;
+    return host;
+  }
+};
+
+}  // namespace
+
+struct GpuBvhSession::State {
+  State(GpuBvhBuilder builder, const accel::BuildOptions& options) : build(builder, options) {}
+
+  GpuBvhBuild build;
+  DeviceStructure structure;
+  double last_build_ms = 0.0;
+};
+
+GpuBvhSession::GpuBvhSession(GpuBvhBuilder builder, const accel::BuildOptions& options) {
+  require_cuda_gpu("the GPU BVH builders");
+  state_ = std::make_unique<State>(builder, options);
+}
+
+GpuBvhSession::~GpuBvhSession() = default;
+
+double GpuBvhSession::build(const accel::TriangleMesh& host_mesh) {
+  DeviceStructure& s = state_->structure;
+  s.set_mesh(host_mesh);
+  GLINT_CUDA_CHECK(cudaEventRecord(s.timing.start, s.timing.stream));
+  state_->build.build(s.boxes.data(), host_mesh.triangle_count, s.bvh, s.timing.stream);
+  GLINT_CUDA_CHECK(cudaEventRecord(s.timing.stop, s.timing.stream));
+  s.builder_name = gpu_builder_name(state_->build.builder());
+  state_->last_build_ms = s.timing.elapsed_ms();
+  return state_->last_build_ms;
+}
+
+void GpuBvhSession::upload(const accel::Bvh& bvh) {
+  DeviceStructure& s = state_->structure;
+  s.bvh.upload(bvh, s.timing.stream);
+  s.builder_name = bvh.builder;
+}
+
+double GpuBvhSession::refit(const accel::TriangleMesh& moved_host_mesh) {
+  return state_->structure.refit(moved_host_mesh);
+}
+
+accel::Bvh GpuBvhSession::download() const {
+  accel::Bvh bvh = state_->structure.download();
+  bvh.build_ms = state_->last_build_ms;
+  return bvh;
+}
+
+accel::Bvh build_bvh_on_gpu(GpuBvhBuilder builder, const accel::TriangleMesh& host_mesh,
+                            const accel::BuildOptions& options) {
+  GpuBvhSession session(builder, options);
+  session.build(host_mesh);
+  return session.download();
+}
+
+accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_host_mesh) {
+  require_cuda_gpu("refit on the GPU");
+  DeviceStructure structure;
+  structure.bvh.upload(bvh, structure.timing.stream);
+  structure.builder_name = bvh.builder;
+  structure.refit(moved_host_mesh);
+  accel::Bvh refitted = structure.download();
+  refitted.build_ms = bvh.build_ms;
+  return refitted;
+}
+
+uint32_t measure_depth_on_gpu(const accel::Bvh& bvh) {
+  require_cuda_gpu("measure_depth on the GPU");
+  DeviceStructure structure;
+  structure.bvh.upload(bvh, structure.timing.stream);
+  return measure_depth(structure.bvh, structure.timing.stream);
+}
+
+}  // namespace glint::cuda

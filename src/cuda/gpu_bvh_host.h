@@ -1,0 +1,61 @@
+#pragma once
+// The GPU BVH builders (cuda/gpu_bvh_build.h) from plain C++: host meshes in, host BVHs out, for
+// tests and benchmarks. No CUDA headers; a build without CUDA throws one clear glint::Error from
+// everything that needs the GPU (the builder names work everywhere).
+#include "accel/build_options.h"
+#include "accel/bvh.h"
+#include "accel/triangle_mesh.h"
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+
+namespace glint::cuda {
+
+enum class GpuBvhBuilder {
+  lbvh,  // Karras 2012: 30-bit Morton codes with the primitive index as tie-break, CUB radix sort, radix tree
+  ploc,  // Meister & Bittner 2018: parallel locally-ordered clustering in Morton order
+};
+
+inline constexpr GpuBvhBuilder kAllGpuBvhBuilders[] = {GpuBvhBuilder::lbvh, GpuBvhBuilder::ploc};
+
+// "lbvh", "ploc".
+const char* gpu_builder_name(GpuBvhBuilder builder);
+// Inverse of gpu_builder_name; glint::Error listing the known names otherwise.
+GpuBvhBuilder parse_gpu_builder(std::string_view name);
+
+// A GPU builder with its mesh, boxes, scratch and output kept on the GPU between calls, so repeated
+// builds and refits allocate nothing once the sizes were seen (what a per-frame rebuild does).
+class GpuBvhSession {
+public:
+  // Needs a CUDA GPU (glint::Error otherwise); options.ploc_radius >= 1.
+  explicit GpuBvhSession(GpuBvhBuilder builder, const accel::BuildOptions& options = {});
+  ~GpuBvhSession();
+  GpuBvhSession(const GpuBvhSession&) = delete;
+  GpuBvhSession& operator=(const GpuBvhSession&) = delete;
+
+  // Uploads `host_mesh`, computes its triangle boxes on the GPU and builds over them; returns the
+  // GPU time of the build alone (CUDA events, milliseconds). Waits for the GPU.
+  double build(const accel::TriangleMesh& host_mesh);
+  // Uploads `bvh` (any builder of the menu; it must be refittable) in place of the last build, so
+  // refit() can update it.
+  void upload(const accel::Bvh& bvh);
+  // Uploads the moved vertices (same triangle count and indices as the mesh the structure was
+  // built over), recomputes the boxes and refits on the GPU; returns the refit's GPU time (ms).
+  double refit(const accel::TriangleMesh& moved_host_mesh);
+  // The current structure copied to the host, with its depth measured on the GPU.
+  accel::Bvh download() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// One-shot forms of the session, for tests: build over the triangles of a host mesh; refit a
+// (CPU- or GPU-built) BVH to moved triangles; the depth of a BVH measured by measure_depth().
+accel::Bvh build_bvh_on_gpu(GpuBvhBuilder builder, const accel::TriangleMesh& host_mesh,
+                            const accel::BuildOptions& options = {});
+accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_host_mesh);
+uint32_t measure_depth_on_gpu(const accel::Bvh& bvh);
+
+}  // namespace glint::cuda
