@@ -223,6 +223,9 @@ int run_render_command(const RenderOptions& options) {
     glFinish();  // the CPU frame time includes the GPU finishing the frame
     const double cpu_frame_ms = milliseconds_since(frame_start);
     if (gpu_deformer) deform_times.deform_ms = gpu_deformer->last_apply_ms();
+    // A GPU backend's update only enqueues work: report its GPU time instead.
+    if (rt::DeviceTracing* device = pipeline.device_tracing(); device && deformers)
+      if (const std::optional<double> update_ms = device->last_update_ms()) deform_times.accel_update_ms = *update_ms;
 
     if (!options.timings_only) {
       const ImageRgba8 image = pipeline.read_final();

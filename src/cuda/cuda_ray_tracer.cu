@@ -91,8 +91,8 @@ private:
 
 class CudaRayTracer final : public rt::RayTracer, public rt::DeviceTracing {
 public:
+  // make_cuda_ray_tracer checks for a GPU first (the members' CUDA events need one).
   CudaRayTracer() {
-    require_cuda_gpu("--backend cuda");
     GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
     GLINT_CUDA_CHECK(cudaEventCreateWithFlags(&sah_ready_, cudaEventDisableTiming));
   }
@@ -113,6 +113,7 @@ public:
   void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                             uint32_t capacity) override;
   double last_trace_ms() override;
+  std::optional<double> last_update_ms() override { return update_timer_.elapsed_ms(); }
   vec3* device_positions(uint32_t mesh) override;
   void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 
@@ -421,6 +422,9 @@ rt::RayTracerStats CudaRayTracer::stats() const {
 
 }  // namespace
 
-std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer() { return std::make_unique<CudaRayTracer>(); }
+std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer() {
+  require_cuda_gpu("--backend cuda");
+  return std::make_unique<CudaRayTracer>();
+}
 
 }  // namespace glint::cuda

@@ -116,6 +116,9 @@ public:
   // Like RayTracer::update, after a GPU deformer rewrote device_positions() of `dirty_meshes`:
   // nothing is copied from the host.
   virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
+  // GPU time of the last update or update_device in milliseconds (CUDA events; waits for it), or
+  // nullopt when the backend does not time it. The host time of those calls is only their enqueueing.
+  virtual std::optional<double> last_update_ms() { return std::nullopt; }
 };
 
 // "cpu", "embree" or "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU);

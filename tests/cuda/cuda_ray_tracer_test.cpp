@@ -90,7 +90,9 @@ void check_updates(Scene scene, accel::BvhBuilder builder, UpdatePolicy policy) 
   }
   const RayTracerStats stats = tracer->stats();
   EXPECT_EQ(stats.rebuilds + stats.refits, 3 * scene.deformable_meshes().size());
-  if (policy == UpdatePolicy::rebuild) EXPECT_EQ(stats.refits, 0u);
+  if (policy == UpdatePolicy::rebuild) {
+    EXPECT_EQ(stats.refits, 0u);
+  }
   if (policy == UpdatePolicy::refit) {
     EXPECT_EQ(stats.rebuilds, 0u);
     ASSERT_TRUE(stats.blas_sah_drift.has_value());
@@ -101,8 +103,9 @@ void check_updates(Scene scene, accel::BvhBuilder builder, UpdatePolicy policy) 
 TEST(CudaRayTracer, UpdatesEqualBruteForceForEveryPolicyAndBuilder) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   for (accel::BvhBuilder builder :
-       {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah, accel::BvhBuilder::trbvh})
+       {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah, accel::BvhBuilder::trbvh}) {
     for (UpdatePolicy policy : kAllUpdatePolicies) check_updates(testing::make_instanced_scene(), builder, policy);
+  }
   check_updates(testing::make_instanced_scene(), accel::BvhBuilder::sbvh, UpdatePolicy::rebuild);
 }
 
