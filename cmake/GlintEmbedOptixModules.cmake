@@ -15,7 +15,8 @@ foreach(_input IN LISTS GLINT_EMBED_INPUTS)
   math(EXPR _size "${_hex_length} / 2")
   # Sixteen bytes a line keeps the generated file readable and the compiler's lines short.
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," _bytes "${_hex}")
-  string(REGEX REPLACE "((0x[0-9a-f][0-9a-f],){16})" "\\1\n" _bytes "${_bytes}")
+  string(REPEAT "0x[0-9a-f][0-9a-f]," 16 _line_pattern)  # CMake's regex has no {16}
+  string(REGEX REPLACE "(${_line_pattern})" "\\1\n" _bytes "${_bytes}")
   string(APPEND _body "const unsigned char kModule${_index}[${_size}] = {\n${_bytes}};\n")
   string(APPEND _table "    {\"${_name}\", kModule${_index}, ${_size}},\n")
   math(EXPR _index "${_index} + 1")

@@ -51,8 +51,6 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   settings.resolve.blur_radius = options.blur_radius;
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
-  if (options.backend == "embree" && options.accel != "sah")
-    fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures", options.accel);
   settings.ray_tracing.backend = options.backend;
   if (options.backend == "optix") {
     // The default ("sah") means OptiX's default here: optix-fasttrace.
@@ -63,6 +61,9 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   } else if (rt::is_optix_accel_name(options.accel)) {
     fail("--accel {} is an OptiX structure: it needs --backend optix", options.accel);
   } else {
+    if (options.backend == "embree" && options.accel != "sah")
+      fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures",
+           options.accel);
     settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
   }
   settings.ray_tracing.update = rt::parse_update_policy(options.update);

@@ -3,6 +3,7 @@
 #include "core/error.h"
 
 #include <optix.h>
+#include <optix_stubs.h>
 
 #include <cstring>
 #include <mutex>

@@ -2,6 +2,7 @@
 #include "rt/optix_build_preference.h"
 
 #include "app/accel_bench/optix_candidates.h"
+#include "rt/ray_tracer.h"
 #include "support/error_of.h"
 
 #include <gtest/gtest.h>

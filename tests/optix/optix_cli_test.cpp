@@ -8,13 +8,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <initializer_list>
+#include <string>
+#include <string_view>
 
 namespace glint::testing {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& path) { return "\"" + path.string() + "\""; }
+// Built by appending (GCC 12 warns falsely about "literal" + std::string under -O2).
+std::string command(std::initializer_list<std::string_view> parts) {
+  std::string text;
+  for (const std::string_view part : parts) text += part;
+  return text;
+}
+std::string quoted(const fs::path& path) { return command({"\"", path.string(), "\""}); }
 long line_count(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
 TEST(OptixCli, OptixStructuresGoWithTheOptixBackendOnly) {
@@ -27,13 +36,14 @@ TEST(OptixCli, OptixStructuresGoWithTheOptixBackendOnly) {
   for (const Case& c : {Case{"--backend cpu --accel optix-fastbuild", "needs --backend optix"},
                         Case{"--backend embree --accel optix-fasttrace", "needs --backend optix"},
                         Case{"--backend optix --accel lbvh", "the optix backend takes optix-fasttrace or optix-fastbuild"}}) {
-    const CliResult r = run_glint(std::string("render atrium-simple ") + c.flags + " --out " + quoted(out));
+    const CliResult r = run_glint(command({"render atrium-simple ", c.flags, " --out ", quoted(out)}));
     EXPECT_EQ(r.exit_code, 1) << c.flags;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.flags;
   }
-  EXPECT_EQ(run_glint("render atrium-simple --backend optix --accel optix-turbo --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint(command({"render atrium-simple --backend optix --accel optix-turbo --out ", quoted(out)})).exit_code,
+            2);
 }
 
 TEST(OptixCli, OptixBackendWhereItCannotRunIsOneClearLine) {
@@ -41,8 +51,8 @@ TEST(OptixCli, OptixBackendWhereItCannotRunIsOneClearLine) {
   TempFolder folder;
   const fs::path out = folder.path() / "optix";
   for (const char* accel : {"optix-fasttrace", "optix-fastbuild", "sah"}) {
-    const CliResult r = run_glint(std::string("render atrium-simple --frames 2100 --width 32 --height 18 --backend optix ") +
-                                  "--accel " + accel + " --out " + quoted(out));
+    const CliResult r = run_glint(command({"render atrium-simple --frames 2100 --width 32 --height 18 --backend optix --accel ",
+                                           accel, " --out ", quoted(out)}));
     EXPECT_EQ(r.exit_code, 1) << accel;
     EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(GLINT_HAVE_OPTIX ? "CUDA GPU" : "built without OptiX"), std::string::npos) << r.err;
