@@ -1,5 +1,5 @@
 # Script mode (cmake -P), run at build time by cmake/GlintOptix.cmake: writes one C++ file holding
-# each compiled OptiX module (OptiX-IR or PTX, GLINT_EMBED_INPUTS, a list of files) as a byte array
+# each compiled OptiX module (OptiX-IR, GLINT_EMBED_INPUTS, a list of files) as a byte array
 # plus a name -> bytes table, looked up by src/optix/embedded_optix_modules.h. A module's name is its
 # file name without extension ("trace_closest_programs").
 set(_body "")

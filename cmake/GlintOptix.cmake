@@ -47,11 +47,6 @@ endif()
 
 set(OptiX_INSTALL_DIR "$ENV{OptiX_INSTALL_DIR}" CACHE PATH
     "OptiX SDK folder (holding include/optix.h) for the optix backend; empty: the backend is off")
-# OptiX-IR is OptiX's preferred input; PTX is the fallback for a driver whose OptiX cannot read the IR
-# of this nvcc (both are embedded the same way and given to optixModuleCreate, which detects which).
-set(GLINT_OPTIX_MODULE_FORMAT optixir CACHE STRING "Format of the embedded OptiX device programs: optixir or ptx")
-set_property(CACHE GLINT_OPTIX_MODULE_FORMAT PROPERTY STRINGS optixir ptx)
-
 glint_optix_decide("${GLINT_HAVE_CUDA}" "${OptiX_INSTALL_DIR}" GLINT_HAVE_OPTIX _glint_optix_line GLINT_OPTIX_VERSION)
 message(STATUS "${_glint_optix_line}")
 
@@ -62,30 +57,22 @@ function(glint_add_optix_sources target)
     target_compile_definitions(${target} PUBLIC GLINT_HAVE_OPTIX=0)
     return()
   endif()
-  if(GLINT_OPTIX_MODULE_FORMAT STREQUAL "optixir")
-    set(_format_flag --optix-ir)
-    set(_extension optixir)
-  elseif(GLINT_OPTIX_MODULE_FORMAT STREQUAL "ptx")
-    set(_format_flag --ptx)
-    set(_extension ptx)
-  else()
-    message(FATAL_ERROR "glint: GLINT_OPTIX_MODULE_FORMAT=${GLINT_OPTIX_MODULE_FORMAT}; use optixir or ptx")
-  endif()
   file(GLOB _host_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/optix/*.cpp)
   file(GLOB _device_sources CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/optix/device/*.cu)
   file(GLOB _shared_headers CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/optix/*.h)
   set(_modules "")
   foreach(_source IN LISTS _device_sources)
     get_filename_component(_name ${_source} NAME_WE)
-    set(_module ${CMAKE_BINARY_DIR}/optix/${_name}.${_extension})
-    # sm_90 (H100/H200), like the CUDA code; OptiX compiles the module for the GPU it runs on.
+    set(_module ${CMAKE_BINARY_DIR}/optix/${_name}.optixir)
+    # OptiX-IR, OptiX's preferred input (nvcc 13's -ptx output fails its own ptxas check on OptiX's
+    # intrinsics), for sm_90 (H100/H200) like the CUDA code; OptiX compiles it for the GPU it runs on.
     add_custom_command(
       OUTPUT ${_module}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/optix
-      COMMAND ${CMAKE_CUDA_COMPILER} ${_format_flag} -arch=sm_90 -std=c++20
+      COMMAND ${CMAKE_CUDA_COMPILER} --optix-ir -arch=sm_90 -std=c++20
               -I${OptiX_INSTALL_DIR}/include -I${CMAKE_SOURCE_DIR}/src -o ${_module} ${_source}
       DEPENDS ${_source} ${_shared_headers}
-      COMMENT "Compiling OptiX device programs ${_name}.cu to ${_extension}"
+      COMMENT "Compiling OptiX device programs ${_name}.cu to OptiX-IR"
       VERBATIM)
     list(APPEND _modules ${_module})
   endforeach()

@@ -1,5 +1,5 @@
 #pragma once
-// The OptiX device programs compiled at build time (src/optix/device/*.cu -> OptiX-IR or PTX) and
+// The OptiX device programs compiled at build time (src/optix/device/*.cu -> OptiX-IR) and
 // embedded into the binary by cmake/GlintEmbedOptixModules.cmake, so glint runs without its source
 // tree or nvcc.
 #include <cstddef>

@@ -1,6 +1,6 @@
 // The OptiX device programs of the optix backend: one closest-hit query per ray of glint's ray list,
 // written as glint's hit record (src/rt/ray_tracer.h's convention), so shading is the same for every
-// backend. Compiled at build time to OptiX-IR (or PTX) and embedded in the binary
+// backend. Compiled at build time to OptiX-IR and embedded in the binary
 // (cmake/GlintOptix.cmake); never linked as ordinary CUDA code.
 #include "optix/optix_launch_params.h"
 
