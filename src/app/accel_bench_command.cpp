@@ -2,6 +2,7 @@
 
 #include "app/accel_bench/bench_run.h"
 #include "app/accel_bench/candidates.h"
+#include "app/accel_bench/optix_candidates.h"
 #include "app/accel_bench/report_json.h"
 #include "app/accel_bench/report_table.h"
 #include "core/error.h"
@@ -49,14 +50,18 @@ CLI::Validator validator_of(Parse parse, const char* description) {
 std::vector<std::string> parse_structure_list(const std::string& text, const std::string& backend) {
   const std::vector<std::string> known = accel_bench::candidate_names();
   const std::vector<std::string> cuda = accel_bench::cuda_candidate_names();
+  const std::vector<std::string> optix = accel_bench::optix_candidate_names();
   const std::vector<std::string> embree = accel_bench::embree_candidate_names();
-  if (backend != "cpu" && backend != "cuda") fail("unknown accel-bench backend \"{}\" (known: cpu, cuda)", backend);
+  const auto contains = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  if (backend != "cpu" && backend != "cuda" && backend != "optix")
+    fail("unknown accel-bench backend \"{}\" (known: cpu, cuda, optix)", backend);
   std::vector<std::string> names;
   if (text == "all") {
     for (const std::string& name : known) {
-      const bool is_cuda = std::find(cuda.begin(), cuda.end(), name) != cuda.end();
-      const bool is_embree = std::find(embree.begin(), embree.end(), name) != embree.end();
-      if (!is_embree && is_cuda == (backend == "cuda")) names.push_back(name);
+      const std::string kind = contains(cuda, name) ? "cuda" : contains(optix, name) ? "optix" : "cpu";
+      if (!contains(embree, name) && kind == backend) names.push_back(name);
     }
   } else {
     for (const std::string& name : split_commas(text)) {
@@ -98,11 +103,11 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
       ->capture_default_str()
       ->check(validator_of([](const std::string& text) { return parse_structure_list(text); }, "BUILDERS"));
   bench->add_option("--backend", options.backend,
-                    "What '--builders all' runs: cpu (glint's CPU structures) or cuda (every builder's BVH on the GPU, "
-                    "traced by the cuda backend's kernel; GPU times, see docs/accel-bench.md). Named structures of "
-                    "either kind can be mixed in --builders")
+                    "What '--builders all' runs: cpu (glint's CPU structures), cuda (every builder's BVH on the GPU, "
+                    "traced by the cuda backend's kernel) or optix (OptiX GASes, fast trace and fast build); GPU "
+                    "times, see docs/accel-bench.md. Named structures of any kind can be mixed in --builders")
       ->capture_default_str()
-      ->check(CLI::IsMember({"cpu", "cuda"}));
+      ->check(CLI::IsMember({"cpu", "cuda", "optix"}));
   bench->add_option("--rays", options.rays,
                     "Rays to trace: 'primary' (one per pixel from the walkthrough camera at each frame), 'reflection' "
                     "(mirror reflections of the primary rays at surfaces with reflectivity > 0) or 'random' (uniform "

@@ -153,6 +153,9 @@ TEST(AccelBenchRun, AllMeansTheBackendsStructuresPlusEmbree) {
                                             "embree-refit"}));
   // Named structures of both kinds mix.
   EXPECT_EQ(parse_structure_list("cuda-lbvh,sah-wide8", "cuda").front(), "cuda-lbvh");
+  EXPECT_EQ(parse_structure_list("all", "optix"),
+            (std::vector<std::string>{"optix-fasttrace", "optix-fastbuild", "embree-low", "embree-medium", "embree-high",
+                                      "embree-refit"}));
   EXPECT_THROW((void)parse_structure_list("all", "vulkan"), Error);
 }
 

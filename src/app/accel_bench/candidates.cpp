@@ -12,6 +12,7 @@
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "accel/wide_bvh_trace.h"
+#include "app/accel_bench/optix_candidates.h"
 #include "core/error.h"
 #include "cuda/gpu_bench_structure.h"
 
@@ -225,6 +226,7 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
     menu.push_back({embree_name(quality), [&device, quality] { return embree_candidate(device, quality); }});
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({cuda_name(builder), [builder] { return cuda_candidate(builder); }});
+  for (CandidateEntry& entry : optix_candidate_menu()) menu.push_back(std::move(entry));
   return menu;
 }
 
@@ -244,6 +246,7 @@ std::vector<std::string> candidate_names() {
   }
   for (std::string& name : embree_candidate_names()) names.push_back(std::move(name));
   for (std::string& name : cuda_candidate_names()) names.push_back(std::move(name));
+  for (std::string& name : optix_candidate_names()) names.push_back(std::move(name));
   return names;
 }
 
