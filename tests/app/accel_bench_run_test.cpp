@@ -124,6 +124,38 @@ TEST(AccelBenchRun, HitAgreementAcceptsTiesAndRejectsRealDifferences) {
   EXPECT_TRUE(hit_disagreement(miss, a));
 }
 
+// A structure that misses a hit lying on its triangle's edge (within single precision) is counted,
+// not failed, up to a budget; any other disagreement still fails at once.
+TEST(AccelBenchRun, EdgeGrazesAreCountedWithinABudgetAndOtherDisagreementsFail) {
+  const accel::Hit miss;
+  const accel::Hit on_edge{14.2f, 0, 100812, 0.67f, 2e-6f};
+  const accel::Hit inside{14.2f, 0, 7, 0.3f, 0.3f};
+  accel::Hit beyond = inside;
+  beyond.t = 16.8f;
+  beyond.prim = 207590;
+  EXPECT_TRUE(is_edge_graze(on_edge, beyond)) << "the reference's nearer hit grazes an edge, the other went past";
+  EXPECT_TRUE(is_edge_graze(on_edge, miss));
+  EXPECT_TRUE(is_edge_graze(miss, on_edge));
+  EXPECT_FALSE(is_edge_graze(inside, beyond)) << "a hit well inside its triangle must not be missed";
+
+  std::vector<accel::Ray> rays(20000);
+  std::vector<accel::Hit> reference(rays.size(), inside), hits(rays.size(), inside);
+  reference[10] = on_edge;
+  hits[10] = beyond;
+  EXPECT_EQ(check_hits("embree-low", "sah", rays, reference, hits), 1u);
+  reference[11] = on_edge;
+  hits[11] = miss;
+  reference[12] = on_edge;
+  hits[12] = miss;
+  const std::string too_many = glint::testing::error_of([&] { (void)check_hits("embree-low", "sah", rays, reference, hits); });
+  EXPECT_NE(too_many.find("3 of 20000 rays"), std::string::npos) << too_many;
+  hits[11] = reference[11];
+  hits[12] = reference[12];
+  hits[13] = beyond;
+  const std::string real = glint::testing::error_of([&] { (void)check_hits("embree-low", "sah", rays, reference, hits); });
+  EXPECT_NE(real.find("on ray 13"), std::string::npos) << real;
+}
+
 TEST(AccelBenchRun, BadOptionsAreClearErrors) {
   Scene scene = glint::testing::make_tiny_scene(4);
   BenchOptions options = small_options();

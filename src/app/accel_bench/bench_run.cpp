@@ -101,7 +101,7 @@ void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& 
       reference_hits = hits;
       report.ray_hits = static_cast<size_t>(std::count_if(hits.begin(), hits.end(), [](const accel::Hit& h) { return h.valid(); }));
     } else {
-      check_hits(name, report.reference, rays, reference_hits, hits);
+      result.edge_grazes = check_hits(name, report.reference, rays, reference_hits, hits);
     }
     double best = std::numeric_limits<double>::infinity();
     for (int run = 0; run < options.timed_runs; ++run)
@@ -171,7 +171,7 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
       if (!pair.refitted.brute_force || work <= options.brute_force_limit) {
         pair.refitted.trace_closest(rays, refit_hits);
         pair.rebuilt.trace_closest(rays, rebuild_hits);
-        check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits, refit_hits);
+        (void)check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits, refit_hits);
       }
       const auto refit_sah = pair.refitted.stats().sah, rebuild_sah = pair.rebuilt.stats().sah;
       if (refit_sah && rebuild_sah && *rebuild_sah > 0.0) result.sah_drift = *refit_sah / *rebuild_sah;

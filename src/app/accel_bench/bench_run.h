@@ -49,6 +49,7 @@ struct StructureResult {
   std::optional<double> mrays_per_s;    // best of timed_runs; nullopt when not traced
   std::optional<double> ratio_to_embree_medium;  // mrays_per_s / embree-medium's
   std::string skipped;                  // why it was not traced, when it was not
+  size_t edge_grazes = 0;               // rays disagreeing with the reference on an edge graze (hit_check.h)
 };
 
 struct DeformResult {

@@ -62,6 +62,7 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
                           {"mrays_per_s", or_null(r.mrays_per_s)},
                           {"ratio_to_embree_medium", or_null(r.ratio_to_embree_medium)}};
     if (!r.skipped.empty()) row["not_traced"] = r.skipped;
+    row["edge_grazes"] = r.edge_grazes;
     j["structures"].push_back(row);
   }
   j["deformation"] = {{"meshes", report.deformable_meshes},

@@ -29,6 +29,7 @@ std::string format_report_table(const BenchReport& report) {
                        or_dash(r.sah, "{:.1f}"), or_dash(r.mrays_per_s, "{:.2f}"),
                        or_dash(r.ratio_to_embree_medium, "{:.2f}"));
     if (!r.skipped.empty()) out += fmt::format("  (not traced: {})", r.skipped);
+    if (r.edge_grazes != 0) out += fmt::format("  ({} edge-grazing rays disagree with the reference)", r.edge_grazes);
     out += '\n';
   }
   if (report.deform.empty()) return out;
