@@ -2,6 +2,7 @@
 
 #include "app/accel_bench/bench_run.h"
 #include "app/accel_bench/candidates.h"
+#include "app/accel_bench/optix_candidates.h"
 #include "app/accel_bench/report_json.h"
 #include "app/accel_bench/report_table.h"
 #include "core/error.h"
@@ -46,11 +47,22 @@ CLI::Validator validator_of(Parse parse, const char* description) {
 
 }  // namespace
 
-std::vector<std::string> parse_structure_list(const std::string& text) {
+std::vector<std::string> parse_structure_list(const std::string& text, const std::string& backend) {
   const std::vector<std::string> known = accel_bench::candidate_names();
+  const std::vector<std::string> cuda = accel_bench::cuda_candidate_names();
+  const std::vector<std::string> optix = accel_bench::optix_candidate_names();
+  const std::vector<std::string> embree = accel_bench::embree_candidate_names();
+  const auto contains = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  if (backend != "cpu" && backend != "cuda" && backend != "optix")
+    fail("unknown accel-bench backend \"{}\" (known: cpu, cuda, optix)", backend);
   std::vector<std::string> names;
   if (text == "all") {
-    names = known;
+    for (const std::string& name : known) {
+      const std::string kind = contains(cuda, name) ? "cuda" : contains(optix, name) ? "optix" : "cpu";
+      if (!contains(embree, name) && kind == backend) names.push_back(name);
+    }
   } else {
     for (const std::string& name : split_commas(text)) {
       if (std::find(known.begin(), known.end(), name) == known.end())
@@ -58,8 +70,8 @@ std::vector<std::string> parse_structure_list(const std::string& text) {
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
   }
-  for (const std::string& embree : accel_bench::embree_candidate_names())
-    if (std::find(names.begin(), names.end(), embree) == names.end()) names.push_back(embree);
+  for (const std::string& name : embree)
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
   return names;
 }
 
@@ -89,7 +101,13 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
                         ". The Embree ones are always added. The first one traced is the reference the others' hits "
                         "are checked against")
       ->capture_default_str()
-      ->check(validator_of(parse_structure_list, "BUILDERS"));
+      ->check(validator_of([](const std::string& text) { return parse_structure_list(text); }, "BUILDERS"));
+  bench->add_option("--backend", options.backend,
+                    "What '--builders all' runs: cpu (glint's CPU structures), cuda (every builder's BVH on the GPU, "
+                    "traced by the cuda backend's kernel) or optix (OptiX GASes, fast trace and fast build); GPU "
+                    "times, see docs/accel-bench.md. Named structures of any kind can be mixed in --builders")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"cpu", "cuda", "optix"}));
   bench->add_option("--rays", options.rays,
                     "Rays to trace: 'primary' (one per pixel from the walkthrough camera at each frame), 'reflection' "
                     "(mirror reflections of the primary rays at surfaces with reflectivity > 0) or 'random' (uniform "
@@ -124,7 +142,7 @@ int run_accel_bench_command(const AccelBenchOptions& options) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
 
   accel_bench::BenchOptions bench;
-  bench.structures = parse_structure_list(options.builders);
+  bench.structures = parse_structure_list(options.builders, options.backend);
   bench.rays = accel_bench::parse_ray_kind(options.rays);
   bench.frames = parse_frame_list(options.frames);
   bench.width = options.width;

@@ -12,6 +12,7 @@ namespace glint {
 struct AccelBenchOptions {
   std::string scene = "atrium";
   std::string builders = "all";       // "all" or comma-separated candidate names
+  std::string backend = "cpu";        // what "all" means: cpu, cuda (cuda-*) or optix (optix-*)
   std::string rays = "reflection";
   std::string frames = "1800,2100,2300,4400";
   int width = 640;
@@ -27,7 +28,8 @@ int run_accel_bench_command(const AccelBenchOptions& options);
 
 // The parsed forms of --builders and --frames; glint::Error with a one-line reason for bad text.
 // Embree's four qualities are always appended (they are the reference columns) unless named already.
-std::vector<std::string> parse_structure_list(const std::string& text);
+// "all" is every structure of `backend`: "cpu" (glint's CPU structures), "cuda" (cuda-*) or "optix" (optix-*).
+std::vector<std::string> parse_structure_list(const std::string& text, const std::string& backend = "cpu");
 std::vector<int> parse_frame_list(const std::string& text);
 
 }  // namespace glint

@@ -37,6 +37,10 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// The backends whose structures live on the GPU (rt::DeviceTracing): they trace the GL-shared ray
+// list in place and follow the GPU deformer.
+bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "optix"; }
+
 render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   render::FramePipelineSettings settings;
   settings.reflections = render::parse_reflection_mode(options.reflections);
@@ -47,10 +51,21 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   settings.resolve.blur_radius = options.blur_radius;
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
-  if (options.backend == "embree" && options.accel != "sah")
-    fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures", options.accel);
   settings.ray_tracing.backend = options.backend;
-  settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
+  if (options.backend == "optix") {
+    // The default ("sah") means OptiX's default here: optix-fasttrace.
+    if (options.accel != "sah" && !rt::is_optix_accel_name(options.accel))
+      fail("--accel {} is one of glint's structures; the optix backend takes optix-fasttrace or optix-fastbuild",
+           options.accel);
+    if (options.accel != "sah") settings.ray_tracing.accel.optix_build = rt::parse_optix_accel(options.accel);
+  } else if (rt::is_optix_accel_name(options.accel)) {
+    fail("--accel {} is an OptiX structure: it needs --backend optix", options.accel);
+  } else {
+    if (options.backend == "embree" && options.accel != "sah")
+      fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures",
+           options.accel);
+    settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
+  }
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
   // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
   // references cannot be refitted.
@@ -61,8 +76,8 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
          "or --deform off",
          options.update);
   if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && deforms_on_gpu(options) &&
-      options.backend != "cuda")
-    fail("--deform-on gpu needs --backend cuda when reflections are ray traced (the {} backend builds from host "
+      !is_gpu_backend(options.backend))
+    fail("--deform-on gpu needs --backend cuda or optix when reflections are ray traced (the {} backend builds from host "
          "vertices); use --deform-on cpu",
          options.backend);
   settings.validate();
@@ -106,7 +121,7 @@ std::string builder_names() {
 }  // namespace
 
 bool deforms_on_gpu(const RenderOptions& options) {
-  return options.deform_on.empty() ? options.backend == "cuda" : options.deform_on == "gpu";
+  return options.deform_on.empty() ? is_gpu_backend(options.backend) : options.deform_on == "gpu";
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -121,12 +136,15 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--backend", options.backend,
                       "Ray tracing backend for hybrid and rt: cpu (glint's own structures on the CPU), embree, or "
-                      "cuda (glint's own structures on the GPU; needs a CUDA GPU)")
-      ->check(CLI::IsMember({"cpu", "embree", "cuda"}))
+                      "cuda (glint's own structures on the GPU; needs a CUDA GPU), or optix (NVIDIA OptiX's; needs a "
+                      "build with OptiX, docs/optix.md)")
+      ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix"}))
       ->capture_default_str();
   command->add_option("--accel", options.accel,
-                      "Structure of the cpu and cuda backends' per-mesh BVHs: " + builder_names())
+                      "Structure of the cpu and cuda backends' per-mesh BVHs: " + builder_names() +
+                          "; of the optix backend: optix-fasttrace (the default there) or optix-fastbuild")
       ->check([](const std::string& name) {
+        if (rt::is_optix_accel_name(name)) return std::string();
         try {
           (void)accel::parse_bvh_builder(name);
           return std::string();
@@ -159,7 +177,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--deform-on", options.deform_on,
                       "Where the deformable meshes are posed: gpu (CUDA kernels writing the GL vertices and the "
-                      "cuda backend's structures in place) or cpu; default: gpu with --backend cuda, else cpu")
+                      "cuda or optix backend's structures in place) or cpu; default: gpu with --backend cuda or optix, "
+                      "else cpu")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   command->add_option("--blur-radius", options.blur_radius, "Reflection blur radius in pixels (0 = off)")
       ->check(CLI::Range(0, 32))
@@ -195,7 +214,10 @@ int run_render_command(const RenderOptions& options) {
   std::optional<SceneDeformers> deformers;
   if (options.deform == "on" && !scene.deformable_meshes().empty()) deformers.emplace(scene);
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
-  if (render::uses_ray_tracing(settings.reflections) && options.backend == "cuda") require_cuda_gpu("--backend cuda");
+  if (render::uses_ray_tracing(settings.reflections)) {
+    rt::check_backend_built(options.backend);
+    if (is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+  }
   if (deformers && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
   const OutputFolder out(options.out);
@@ -223,6 +245,9 @@ int run_render_command(const RenderOptions& options) {
     glFinish();  // the CPU frame time includes the GPU finishing the frame
     const double cpu_frame_ms = milliseconds_since(frame_start);
     if (gpu_deformer) deform_times.deform_ms = gpu_deformer->last_apply_ms();
+    // A GPU backend's update only enqueues work: report its GPU time instead.
+    if (rt::DeviceTracing* device = pipeline.device_tracing(); device && deformers)
+      if (const std::optional<double> update_ms = device->last_update_ms()) deform_times.accel_update_ms = *update_ms;
 
     if (!options.timings_only) {
       const ImageRgba8 image = pipeline.read_final();

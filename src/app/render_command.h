@@ -11,8 +11,10 @@ namespace glint {
 struct RenderOptions {
   std::string scene = "atrium";
   std::string reflections = "hybrid";  // off|ssr|hybrid|rt
-  std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree|cuda
-  std::string accel = "sah";           // cpu and cuda backends' BLAS builder (accel::builder_name)
+  std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree|cuda|optix
+  // cpu and cuda backends' BLAS builder (accel::builder_name); optix: optix-fasttrace|optix-fastbuild
+  // (the default "sah" means optix-fasttrace there)
+  std::string accel = "sah";
   std::string update = "auto";         // deformed meshes' structures: rebuild|refit|auto
   int width = 1280;
   int height = 720;
@@ -22,7 +24,7 @@ struct RenderOptions {
   bool video = false;
   bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)
   std::string deform = "on";      // on|off: animate the deformable meshes
-  std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda, cpu otherwise
+  std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda or optix, cpu otherwise
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
   int blur_radius = 2;
   float exposure = 1.0f;

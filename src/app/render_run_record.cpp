@@ -121,7 +121,9 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
 
 void RenderRunRecord::set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats) {
   run_["ray_tracer"] = {{"backend", settings.backend},
-                        {"accel", std::string(accel::builder_name(settings.accel.builder))},
+                        {"accel", std::string(settings.backend == "optix"
+                                                  ? rt::optix_accel_name(settings.accel.optix_build)
+                                                  : accel::builder_name(settings.accel.builder))},
                         {"update", std::string(rt::update_policy_name(settings.update))},
                         {"build_ms", stats.build_ms},
                         {"memory_bytes", stats.memory_bytes}};

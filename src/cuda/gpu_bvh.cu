@@ -16,10 +16,10 @@ std::vector<uint32_t> bvh_parents(const accel::Bvh& bvh) {
 void GpuBvh::upload(const accel::Bvh& bvh, cudaStream_t stream) {
   nodes.upload(std::span<const accel::BvhNode>(bvh.nodes), stream);
   prim_indices.upload(std::span<const uint32_t>(bvh.prim_indices), stream);
-  // Synchronous: the parent list is a temporary of this call.
+  // The parent list is a temporary of this call: an asynchronous copy from pageable memory has
+  // staged its source by the time it returns, so the list may go.
   const std::vector<uint32_t> parent_list = bvh_parents(bvh);
-  if (stream) GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
-  parents.upload(std::span<const uint32_t>(parent_list));
+  parents.upload(std::span<const uint32_t>(parent_list), stream);
   depth = bvh.depth;
   refittable = bvh.refittable;
 }

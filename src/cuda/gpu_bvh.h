@@ -25,7 +25,8 @@ struct GpuBvh {
   accel::BvhView view() const { return {nodes.data(), prim_indices.data(), node_count()}; }
 
   // Copies a CPU-built BVH and its parent links (computed on the host), synchronously unless a
-  // stream is given (then `bvh` must stay alive until the stream reaches the copy).
+  // stream is given (then asynchronously on it: pageable host memory is staged before
+  // cudaMemcpyAsync returns, so `bvh` may go as soon as this returns).
   void upload(const accel::Bvh& bvh, cudaStream_t stream = nullptr);
   // Copies the structure back (for tests and statistics); `builder` names it.
   accel::Bvh download(const char* builder) const;

@@ -1,8 +1,12 @@
 #include "rt/ray_tracer.h"
 
 #include "core/error.h"
+#include "cuda/cuda_ray_tracer.h"
 #include "rt/cpu_ray_tracer.h"
 #include "rt/embree_ray_tracer.h"
+#if GLINT_HAVE_OPTIX
+#include "optix/optix_ray_tracer.h"
+#endif
 
 namespace glint::rt {
 
@@ -24,10 +28,25 @@ UpdatePolicy parse_update_policy(std::string_view name) {
   fail("unknown update policy \"{}\" (known: rebuild, refit, auto)", name);
 }
 
+void check_backend_built(std::string_view backend) {
+#if !GLINT_HAVE_OPTIX
+  if (backend == "optix")
+    fail("the optix backend is not in this build: glint was built without OptiX (configure with "
+         "-DOptiX_INSTALL_DIR=<OptiX SDK folder> and CUDA on; docs/optix.md)");
+#else
+  (void)backend;
+#endif
+}
+
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend) {
+  check_backend_built(backend);
   if (backend == "cpu") return std::make_unique<CpuRayTracer>();
   if (backend == "embree") return std::make_unique<EmbreeRayTracer>();
-  fail("unknown ray tracing backend \"{}\" (known: cpu, embree)", backend);
+  if (backend == "cuda") return cuda::make_cuda_ray_tracer();
+#if GLINT_HAVE_OPTIX
+  if (backend == "optix") return std::make_unique<optix::OptixRayTracer>();
+#endif
+  fail("unknown ray tracing backend \"{}\" (known: cpu, embree, cuda, optix)", backend);
 }
 
 }  // namespace glint::rt

@@ -11,6 +11,7 @@
 #include "accel/builder.h"
 #include "accel/build_options.h"
 #include "accel/ray.h"
+#include "rt/optix_build_preference.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -49,6 +50,8 @@ struct AccelOptions {
   // kernels, several times faster); false traces the binary BVHs (kept for comparison). Builders
   // whose BVH cannot be collapsed (sbvh: split references) trace the binary BVH either way.
   bool wide_traversal = true;
+  // optix backend: how OptiX builds every GAS (and the IAS); the BVH builder above is not used.
+  OptixBuildPreference optix_build = OptixBuildPreference::fast_trace;
 };
 
 struct RayTracerStats {
@@ -116,9 +119,16 @@ public:
   // Like RayTracer::update, after a GPU deformer rewrote device_positions() of `dirty_meshes`:
   // nothing is copied from the host.
   virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
+  // GPU time of the last update or update_device in milliseconds (CUDA events; waits for it), or
+  // nullopt when the backend does not time it. The host time of those calls is only their enqueueing.
+  virtual std::optional<double> last_update_ms() { return std::nullopt; }
 };
 
-// "cpu" or "embree"; glint::Error listing the known names otherwise.
+// "cpu", "embree", "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU) or "optix"
+// (optix/optix_ray_tracer.h); glint::Error listing the known names otherwise, or check_backend_built's.
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
+// glint::Error, one line saying how to enable it, for a backend this build lacks (optix without
+// OptiX); nothing otherwise. Lets a command refuse before it writes anything.
+void check_backend_built(std::string_view backend);
 
 }  // namespace glint::rt

@@ -7,6 +7,7 @@
 #include "app/accel_bench/report_table.h"
 #include "app/accel_bench_command.h"
 #include "app/cli_runner.h"
+#include "cuda/device_query.h"
 #include "rt/tiny_scene.h"
 #include "support/error_of.h"
 #include "support/temp_folder.h"
@@ -28,7 +29,7 @@ bool is_binary_bvh(const std::string& name) {
 
 BenchOptions small_options() {
   BenchOptions options;
-  options.structures = candidate_names();
+  options.structures = parse_structure_list("all");  // the CPU structures and Embree
   options.rays = RayKind::reflection;
   options.frames = {0, 50, 99};
   options.width = 48;
@@ -140,6 +141,52 @@ TEST(AccelBenchRun, BadOptionsAreClearErrors) {
   // Embree's qualities are always added, after the named ones, without duplicates.
   EXPECT_EQ(parse_structure_list("sah,embree-high"),
             (std::vector<std::string>{"sah", "embree-high", "embree-low", "embree-medium", "embree-refit"}));
+}
+
+TEST(AccelBenchRun, AllMeansTheBackendsStructuresPlusEmbree) {
+  const std::vector<std::string> cpu = parse_structure_list("all");
+  const std::vector<std::string> cuda = parse_structure_list("all", "cuda");
+  EXPECT_NE(std::find(cpu.begin(), cpu.end(), "sah-wide8"), cpu.end());
+  EXPECT_EQ(std::count_if(cpu.begin(), cpu.end(), [](const std::string& n) { return n.starts_with("cuda-"); }), 0);
+  EXPECT_EQ(cuda, (std::vector<std::string>{"cuda-none", "cuda-median", "cuda-sah", "cuda-sbvh", "cuda-lbvh",
+                                            "cuda-trbvh", "cuda-ploc", "embree-low", "embree-medium", "embree-high",
+                                            "embree-refit"}));
+  // Named structures of both kinds mix.
+  EXPECT_EQ(parse_structure_list("cuda-lbvh,sah-wide8", "cuda").front(), "cuda-lbvh");
+  EXPECT_EQ(parse_structure_list("all", "optix"),
+            (std::vector<std::string>{"optix-fasttrace", "optix-fastbuild", "embree-low", "embree-medium", "embree-high",
+                                      "embree-refit"}));
+  EXPECT_THROW((void)parse_structure_list("all", "vulkan"), Error);
+}
+
+// The GPU rows: every structure's hits are checked against the CPU reference before timing, and
+// the GPU ones report GPU times and SAH like the CPU ones.
+TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  Scene scene = glint::testing::make_tiny_scene(4);
+  BenchOptions options = small_options();
+  options.structures = {"sah", "cuda-lbvh", "cuda-ploc", "cuda-sah", "cuda-sbvh", "embree-medium"};
+  options.deform_frames = 3;
+  const BenchReport report = run_accel_bench(scene, options);
+  ASSERT_EQ(report.structures.size(), options.structures.size());
+  for (const StructureResult& result : report.structures) {
+    EXPECT_TRUE(result.mrays_per_s.has_value()) << result.name;
+    if (result.name.starts_with("cuda-")) {
+      EXPECT_TRUE(result.sah.has_value()) << result.name;
+      EXPECT_TRUE(result.nodes.has_value()) << result.name;
+    }
+  }
+  bool sbvh_seen = false;
+  for (const DeformResult& deform : report.deform) {
+    if (deform.name == "cuda-sbvh") {
+      sbvh_seen = true;
+      EXPECT_FALSE(deform.refit_ms.has_value());
+    }
+    if (deform.name == "cuda-lbvh") {
+      EXPECT_TRUE(deform.refit_ms.has_value());
+    }
+  }
+  EXPECT_TRUE(sbvh_seen);
 }
 
 TEST(AccelBenchRun, JsonHasTheMachineAndOneRowPerStructure) {

@@ -4,7 +4,9 @@
 // policy does not change the image.
 #include "metrics/rmse_psnr.h"
 #include "metrics/ssim.h"
+#include "cuda/device_query.h"
 #include "render/frame_pipeline.h"
+#include "render/gpu_deformation.h"
 #include "raster_test_scene.h"
 #include "scene/presets.h"
 #include "scene/sine_deformer.h"
@@ -175,12 +177,26 @@ TEST_F(HybridPipelineTest, HybridIsCloserToRtThanSsrOnTheAtrium) {
 
 // Renders the atrium at frame 2100 after the dinosaurs moved from their frame-2000 pose, the ray
 // tracer updated by `policy`.
-ImageRgba8 deformed_atrium(const std::string& backend, rt::UpdatePolicy policy, bool update_tracer = true) {
+// With `deform_on_gpu` the CUDA deformer poses the meshes (GL vertices and the cuda backend's
+// positions) instead of the CPU one.
+ImageRgba8 deformed_atrium(const std::string& backend, rt::UpdatePolicy policy, bool update_tracer = true,
+                           ReflectionMode mode = ReflectionMode::rt, bool deform_on_gpu = false,
+                           accel::BvhBuilder builder = accel::BvhBuilder::sah) {
   AtriumFrame atrium(2000);
-  FramePipelineSettings settings = unfiltered(ReflectionMode::rt);
+  FramePipelineSettings settings = unfiltered(mode);
   settings.ray_tracing.backend = backend;
   settings.ray_tracing.update = policy;
+  settings.ray_tracing.accel.builder = builder;
   FramePipeline pipeline(atrium.scene, 160, 90, settings);
+  if (deform_on_gpu) {
+    const SceneDeformers deformers(atrium.scene);
+    const auto gpu_deformer = make_gpu_deformer(deformers, pipeline);
+    const std::vector<std::uint32_t> dirty = gpu_deformer->apply(2100);
+    EXPECT_FALSE(dirty.empty());
+    if (update_tracer) pipeline.update_ray_tracer_on_device(dirty);
+    pipeline.render(WalkthroughAnimation(atrium.scene).at(2100));
+    return pipeline.read_final();
+  }
   const std::vector<std::uint32_t> dirty = SceneDeformers(atrium.scene).apply(atrium.scene, 2100);
   EXPECT_FALSE(dirty.empty());
   pipeline.upload_meshes(dirty);
@@ -207,6 +223,31 @@ TEST_F(HybridPipelineTest, CpuAndEmbreeBackendsGiveTheSameImage) {
   const ImageRgba8 cpu = deformed_atrium("cpu", rt::UpdatePolicy::refit);
   const ImageRgba8 embree = deformed_atrium("embree", rt::UpdatePolicy::refit);
   EXPECT_GE(metrics::rmse_psnr(embree, cpu).psnr, 50.0);
+}
+
+// The bar for the cuda backend: its frames equal the cpu backend's within PSNR 50 dB, for
+// rt and hybrid, refit and rebuild, GPU-built and uploaded structures, and with the deformation done
+// on the GPU (GL vertices and the tracer's positions written by CUDA, no host copy).
+TEST_F(HybridPipelineTest, CudaBackendGivesTheCpuBackendsImage) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  for (ReflectionMode mode : {ReflectionMode::rt, ReflectionMode::hybrid}) {
+    const ImageRgba8 cpu = deformed_atrium("cpu", rt::UpdatePolicy::refit, true, mode);
+    for (rt::UpdatePolicy policy : {rt::UpdatePolicy::refit, rt::UpdatePolicy::rebuild})
+      for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah})
+        EXPECT_GE(metrics::rmse_psnr(deformed_atrium("cuda", policy, true, mode, false, builder), cpu).psnr, 50.0)
+            << rt::update_policy_name(policy) << " " << accel::builder_name(builder);
+    EXPECT_GE(metrics::rmse_psnr(deformed_atrium("cuda", rt::UpdatePolicy::refit, true, mode, true), cpu).psnr, 50.0)
+        << "deformed on the GPU";
+  }
+}
+
+TEST_F(HybridPipelineTest, TheCudaTracerFollowsTheGpuDeformation) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const ImageRgba8 updated = deformed_atrium("cuda", rt::UpdatePolicy::refit, true, ReflectionMode::rt, true);
+  const ImageRgba8 stale = deformed_atrium("cuda", rt::UpdatePolicy::refit, false, ReflectionMode::rt, true);
+  int differing = 0;
+  for (std::size_t i = 0; i < updated.pixels.size(); ++i) differing += updated.pixels[i] != stale.pixels[i];
+  EXPECT_GT(differing, 0) << "reflections traced against the rest pose differ from the deformed pose's";
 }
 
 }  // namespace

@@ -105,7 +105,8 @@ void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& 
     }
     double best = std::numeric_limits<double>::infinity();
     for (int run = 0; run < options.timed_runs; ++run)
-      best = std::min(best, seconds_of([&] { candidate.trace_closest(rays, hits); }));
+      best = std::min(best, candidate.trace_closest_timed ? candidate.trace_closest_timed(rays, hits)
+                                                          : seconds_of([&] { candidate.trace_closest(rays, hits); }));
     result.mrays_per_s = best > 0.0 ? static_cast<double>(rays.size()) / best * 1e-6 : 0.0;
     report_progress(options, fmt::format("accel-bench: {}: built in {:.1f} ms, {:.2f} Mrays/s", name, result.build_ms,
                                          *result.mrays_per_s));

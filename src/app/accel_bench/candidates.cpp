@@ -12,7 +12,9 @@
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "accel/wide_bvh_trace.h"
+#include "app/accel_bench/optix_candidates.h"
 #include "core/error.h"
+#include "cuda/gpu_bench_structure.h"
 
 #include <chrono>
 #include <memory>
@@ -166,6 +168,42 @@ Candidate embree_candidate(const accel::EmbreeDevice& device, accel::EmbreeQuali
   return candidate;
 }
 
+std::string cuda_name(accel::BvhBuilder builder) { return "cuda-" + std::string(accel::builder_name(builder)); }
+
+// A structure on the GPU, traced by the cuda backend's kernel; its times are GPU times (what they
+// include: cuda/gpu_bench_structure.h).
+Candidate cuda_candidate(accel::BvhBuilder builder) {
+  auto structure = std::make_shared<std::optional<cuda::GpuBenchStructure>>();
+  Candidate candidate;
+  candidate.name = cuda_name(builder);
+  candidate.brute_force = builder == accel::BvhBuilder::none;
+  candidate.build = [structure, builder](const accel::TriangleMesh& mesh) {
+    if (!*structure) structure->emplace(builder);
+    return (*structure)->build(mesh);
+  };
+  candidate.refit = [structure](const accel::TriangleMesh& mesh) -> std::optional<double> {
+    if (!*structure) fail("accel-bench: refit before build");
+    return (*structure)->refit(mesh);
+  };
+  candidate.trace_closest_timed = [structure](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+    if (!*structure) fail("accel-bench: trace before build");
+    return (*structure)->trace_closest(rays, hits) * 1e-3;
+  };
+  candidate.trace_closest = [timed = candidate.trace_closest_timed](std::span<const accel::Ray> rays,
+                                                                    std::span<accel::Hit> hits) { timed(rays, hits); };
+  candidate.stats = [structure] {
+    CandidateStats stats;
+    if (!*structure) return stats;
+    const accel::Bvh bvh = (*structure)->download();
+    const accel::BvhStats bvh_stats = accel::compute_stats(bvh);
+    stats.nodes = bvh_stats.nodes;
+    stats.memory_bytes = (*structure)->memory_bytes();
+    stats.sah = bvh_stats.sah_cost;
+    return stats;
+  };
+  return candidate;
+}
+
 }  // namespace
 
 std::string wide_candidate_name(accel::BvhBuilder builder, int width) {
@@ -186,6 +224,9 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
   }
   for (const accel::EmbreeQuality quality : accel::kAllEmbreeQualities)
     menu.push_back({embree_name(quality), [&device, quality] { return embree_candidate(device, quality); }});
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
+    menu.push_back({cuda_name(builder), [builder] { return cuda_candidate(builder); }});
+  for (CandidateEntry& entry : optix_candidate_menu()) menu.push_back(std::move(entry));
   return menu;
 }
 
@@ -204,6 +245,14 @@ std::vector<std::string> candidate_names() {
     names.push_back(wide_candidate_name(builder, 8));
   }
   for (std::string& name : embree_candidate_names()) names.push_back(std::move(name));
+  for (std::string& name : cuda_candidate_names()) names.push_back(std::move(name));
+  for (std::string& name : optix_candidate_names()) names.push_back(std::move(name));
+  return names;
+}
+
+std::vector<std::string> cuda_candidate_names() {
+  std::vector<std::string> names;
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) names.push_back(cuda_name(builder));
   return names;
 }
 

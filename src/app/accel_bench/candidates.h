@@ -34,6 +34,9 @@ struct Candidate {
   // this structure cannot refit (then the bench only rebuilds it).
   std::function<std::optional<double>(const accel::TriangleMesh&)> refit;
   std::function<void(std::span<const accel::Ray>, std::span<accel::Hit>)> trace_closest;
+  // GPU structures time their own kernel (CUDA events, rays resident on the device) and return its
+  // seconds; the bench then uses those instead of the wall time of trace_closest. Empty for CPU ones.
+  std::function<double(std::span<const accel::Ray>, std::span<accel::Hit>)> trace_closest_timed;
   std::function<CandidateStats()> stats;
 };
 
@@ -44,8 +47,11 @@ struct CandidateEntry {
   std::function<Candidate()> make;
 };
 
-// Every known structure: each accel::kAllBvhBuilders builder by its builder_name, then
-// "embree-low", "embree-medium", "embree-high", "embree-refit". `device` must outlive the candidates.
+// Every known structure: each accel::kAllBvhBuilders builder by its builder_name, "kdtree", the wide
+// BVHs, "embree-low", "embree-medium", "embree-high", "embree-refit", then the GPU structures
+// "cuda-<builder>" for every builder (cuda/gpu_bench_structure.h; making one fails with one clear
+// line without CUDA or a GPU), then "optix-fasttrace" and "optix-fastbuild" (optix_candidates.h).
+// `device` must outlive the candidates.
 std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
 
 // The names candidate_menu() has, without needing a device (for validating command lines).
@@ -55,6 +61,8 @@ inline constexpr accel::BvhBuilder kWideSources[] = {accel::BvhBuilder::sah, acc
 std::string wide_candidate_name(accel::BvhBuilder builder, int width);
 
 std::vector<std::string> candidate_names();
+// "cuda-<builder>" for every accel::kAllBvhBuilders builder: what `--backend cuda --builders all` runs.
+std::vector<std::string> cuda_candidate_names();
 std::vector<std::string> embree_candidate_names();
 
 }  // namespace glint::accel_bench

@@ -1,0 +1,63 @@
+#include "app/accel_bench/optix_candidates.h"
+
+#include "core/error.h"
+#include "rt/optix_build_preference.h"
+#include "rt/ray_tracer.h"
+#if GLINT_HAVE_OPTIX
+#include "optix/optix_mesh_tracer.h"
+#endif
+
+#include <memory>
+
+namespace glint::accel_bench {
+namespace {
+
+#if GLINT_HAVE_OPTIX
+// Build and refit report the OptiX GAS's own milliseconds; the geometry upload is not timed (glint's
+// CPU builders read host memory in place). Nodes and SAH are unknown: OptiX hides its nodes.
+Candidate optix_candidate(rt::OptixBuildPreference preference) {
+  auto tracer = std::make_shared<optix::OptixMeshTracer>(preference);
+  Candidate candidate;
+  candidate.name = std::string(rt::optix_accel_name(preference));
+  candidate.build = [tracer](const accel::TriangleMesh& mesh) { return tracer->build(mesh); };
+  candidate.refit = [tracer](const accel::TriangleMesh& mesh) -> std::optional<double> { return tracer->refit(mesh); };
+  candidate.trace_closest = [tracer](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+    tracer->trace_closest(rays, hits);
+  };
+  candidate.stats = [tracer] {
+    CandidateStats stats;
+    stats.memory_bytes = tracer->structure_bytes();
+    return stats;
+  };
+  return candidate;
+}
+#endif
+
+}  // namespace
+
+std::vector<std::string> optix_candidate_names() {
+  std::vector<std::string> names;
+  for (const rt::OptixBuildPreference preference : rt::kAllOptixBuildPreferences)
+    names.emplace_back(rt::optix_accel_name(preference));
+  return names;
+}
+
+bool optix_candidates_built() { return GLINT_HAVE_OPTIX != 0; }
+
+std::vector<CandidateEntry> optix_candidate_menu() {
+  std::vector<CandidateEntry> menu;
+#if GLINT_HAVE_OPTIX
+  for (const rt::OptixBuildPreference preference : rt::kAllOptixBuildPreferences)
+    menu.push_back({std::string(rt::optix_accel_name(preference)), [preference] { return optix_candidate(preference); }});
+#else
+  // Known names in every build; making one says how to enable OptiX.
+  for (const std::string& name : optix_candidate_names())
+    menu.push_back({name, []() -> Candidate {
+                      rt::check_backend_built("optix");
+                      return {};
+                    }});
+#endif
+  return menu;
+}
+
+}  // namespace glint::accel_bench

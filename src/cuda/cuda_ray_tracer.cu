@@ -1,0 +1,430 @@
+#include "cuda/cuda_ray_tracer.h"
+
+#include "accel/bvh_stats.h"
+#include "cuda/cuda_check.h"
+#include "cuda/device_query.h"
+#include "cuda/gpu_bvh_build.h"
+#include "cuda/gpu_bvh_sah.h"
+#include "cuda/gpu_mesh.h"
+#include "cuda/gpu_trace.h"
+#include "rt/scene_shape.h"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <string>
+
+namespace glint::cuda {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+bool builds_on_gpu(accel::BvhBuilder builder) {
+  return builder == accel::BvhBuilder::lbvh || builder == accel::BvhBuilder::ploc;
+}
+
+GpuBvhBuilder gpu_builder_of(accel::BvhBuilder builder) {
+  return builder == accel::BvhBuilder::ploc ? GpuBvhBuilder::ploc : GpuBvhBuilder::lbvh;
+}
+
+// A start/stop pair of CUDA events around enqueued work: the GPU time, read when asked.
+class EventTimer {
+public:
+  EventTimer() {
+    GLINT_CUDA_CHECK(cudaEventCreate(&start_));
+    GLINT_CUDA_CHECK(cudaEventCreate(&stop_));
+  }
+  ~EventTimer() {
+    cudaEventDestroy(start_);
+    cudaEventDestroy(stop_);
+  }
+  EventTimer(const EventTimer&) = delete;
+  EventTimer& operator=(const EventTimer&) = delete;
+
+  void start(cudaStream_t stream) { GLINT_CUDA_CHECK(cudaEventRecord(start_, stream)); }
+  void stop(cudaStream_t stream) {
+    GLINT_CUDA_CHECK(cudaEventRecord(stop_, stream));
+    recorded_ = true;
+  }
+  // Waits for the stop event; 0 before anything was timed.
+  double elapsed_ms() {
+    if (!recorded_) return 0.0;
+    GLINT_CUDA_CHECK(cudaEventSynchronize(stop_));
+    float ms = 0.0f;
+    GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
+    return ms;
+  }
+
+private:
+  cudaEvent_t start_ = nullptr;
+  cudaEvent_t stop_ = nullptr;
+  bool recorded_ = false;
+};
+
+// Host memory the GPU copies small results into (page-locked, so the copy is truly asynchronous).
+template <typename T>
+class PinnedArray {
+public:
+  PinnedArray() = default;
+  ~PinnedArray() {
+    if (data_) cudaFreeHost(data_);
+  }
+  PinnedArray(const PinnedArray&) = delete;
+  PinnedArray& operator=(const PinnedArray&) = delete;
+
+  void reset(std::size_t count) {
+    if (data_) cudaFreeHost(data_);
+    data_ = nullptr;
+    if (count != 0) GLINT_CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&data_), count * sizeof(T)));
+    std::fill(data_, data_ + count, T{});
+  }
+  T* data() { return data_; }
+  T& operator[](std::size_t i) { return data_[i]; }
+
+private:
+  T* data_ = nullptr;
+};
+
+class CudaRayTracer final : public rt::RayTracer, public rt::DeviceTracing {
+public:
+  // make_cuda_ray_tracer checks for a GPU first (the members' CUDA events need one).
+  CudaRayTracer() {
+    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
+    GLINT_CUDA_CHECK(cudaEventCreateWithFlags(&sah_ready_, cudaEventDisableTiming));
+  }
+  ~CudaRayTracer() override {
+    cudaStreamSynchronize(stream_);
+    cudaEventDestroy(sah_ready_);
+    cudaStreamDestroy(stream_);
+  }
+
+  void build(const Scene& scene, const rt::AccelOptions& options) override;
+  void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
+  void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  rt::RayTracerStats stats() const override;
+  std::string_view name() const override { return "cuda"; }
+  rt::DeviceTracing* device_tracing() override { return this; }
+
+  void* stream() override { return stream_; }
+  void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                            uint32_t capacity) override;
+  double last_trace_ms() override;
+  std::optional<double> last_update_ms() override { return update_timer_.elapsed_ms(); }
+  vec3* device_positions(uint32_t mesh) override;
+  void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
+
+private:
+  struct MeshState {
+    GpuMesh mesh;
+    // Host copies for the CPU builders (rebuilds read them); the positions are stale after a GPU
+    // deformation until read back.
+    std::vector<vec3> host_positions;
+    std::vector<uint32_t> host_indices;
+    bool host_positions_current = true;
+    bool deformable = false;
+    DeviceBuffer<Aabb> boxes;  // triangle boxes: the GPU builders' and refit's input
+    GpuBvh bvh;
+    std::optional<GpuBvhBuild> gpu_builder;
+    DeviceBuffer<uint32_t> refit_counters;
+    DeviceBuffer<double> sah_sums;
+  };
+
+  void require_built(const char* what) const;
+  void require_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) const;
+  void rebuild_mesh(uint32_t m);
+  void refit_mesh(uint32_t m);
+  void upload_blas_views();
+  void update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
+  accel::TlasView tlas_view() const {
+    return {tlas_.view(), instances_.data(), blas_views_.data()};
+  }
+  void check_overflow() const;
+
+  cudaStream_t stream_ = nullptr;
+  rt::AccelOptions options_;
+  rt::SceneShape shape_;
+  std::vector<std::string> mesh_names_;
+  std::vector<MeshState> meshes_;
+  std::vector<accel::Instance> host_instances_;
+  DeviceBuffer<accel::Instance> instances_;
+  DeviceBuffer<accel::Blas> blas_views_;
+  DeviceBuffer<Aabb> instance_boxes_;
+  GpuBvh tlas_;
+  std::optional<GpuBvhBuild> tlas_builder_;
+  DeviceBuffer<uint32_t> tlas_refit_counters_;
+
+  // SAH cost per mesh, [2m] at its last rebuild and [2m + 1] now, computed on the GPU after every
+  // (re)build or refit and copied to pinned host memory at the end of each update (sah_ready_).
+  DeviceBuffer<float> device_sah_;
+  mutable PinnedArray<float> host_sah_;
+  cudaEvent_t sah_ready_ = nullptr;
+  bool sah_copied_ = false;
+
+  // Host-side tracing: the rays and hits in device memory (kept, so repeated calls allocate nothing).
+  mutable DeviceBuffer<accel::Ray> host_rays_;
+  mutable DeviceBuffer<accel::Hit> host_hits_;
+  mutable DeviceBuffer<uint32_t> overflow_;
+  mutable EventTimer trace_timer_;
+  mutable EventTimer update_timer_;
+
+  bool built_ = false;
+  double build_ms_ = 0.0;
+  std::size_t rebuilds_ = 0;
+  std::size_t refits_ = 0;
+};
+
+void CudaRayTracer::require_built(const char* what) const {
+  if (!built_) fail_message(std::string("rt cuda: ") + what + " before build()");
+}
+
+void CudaRayTracer::require_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) const {
+  if (policy == rt::UpdatePolicy::rebuild) return;
+  for (uint32_t m : dirty_meshes)
+    if (!meshes_[m].bvh.refittable)
+      fail_message("rt cuda: update policy '" + std::string(rt::update_policy_name(policy)) + "' refits, but the " +
+                   std::string(accel::builder_name(options_.builder)) + " builder's BVHs cannot be refitted (mesh '" +
+                   mesh_names_[m] + "'); use policy rebuild or another builder");
+}
+
+void CudaRayTracer::rebuild_mesh(uint32_t m) {
+  MeshState& state = meshes_[m];
+  const uint32_t triangles = state.mesh.triangle_count();
+  if (state.gpu_builder) {
+    state.boxes.resize(triangles);
+    compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_);
+    state.gpu_builder->build(state.boxes.data(), triangles, state.bvh, stream_);
+  } else {
+    if (!state.host_positions_current) {
+      // A GPU deformer moved the vertices: the CPU builder needs them on the host.
+      GLINT_CUDA_CHECK(cudaMemcpyAsync(state.host_positions.data(), state.mesh.positions.data(),
+                                       state.mesh.positions.bytes(), cudaMemcpyDeviceToHost, stream_));
+      GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+      state.host_positions_current = true;
+    }
+    const accel::Bvh host_bvh = accel::build_bvh(
+        options_.builder, accel::make_indexed_mesh(state.host_positions, state.host_indices), options_.build);
+    state.bvh.upload(host_bvh, stream_);
+  }
+  const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
+  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m, stream_);
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(device_sah_.data() + 2 * m + 1, device_sah_.data() + 2 * m, sizeof(float),
+                                   cudaMemcpyDeviceToDevice, stream_));
+}
+
+void CudaRayTracer::refit_mesh(uint32_t m) {
+  MeshState& state = meshes_[m];
+  state.boxes.resize(state.mesh.triangle_count());
+  compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_);
+  refit_gpu(state.bvh, state.boxes.data(), state.refit_counters, stream_);
+  const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
+  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m + 1, stream_);
+}
+
+// The traversal reads each BLAS through a device array of views; a rebuild may move a BVH's
+// storage (a larger CPU-built BVH), so the views are written again after rebuilds.
+void CudaRayTracer::upload_blas_views() {
+  std::vector<accel::Blas> views(meshes_.size());
+  for (std::size_t m = 0; m < meshes_.size(); ++m) views[m] = {meshes_[m].bvh.view(), meshes_[m].mesh.view()};
+  // Pageable source: cudaMemcpyAsync returns once the data is staged, so `views` may go.
+  blas_views_.upload(std::span<const accel::Blas>(views), stream_);
+}
+
+void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
+  scene.validate();
+  if (!(options.auto_rebuild_sah_ratio >= 1.0f))
+    fail_message("rt cuda: auto_rebuild_sah_ratio must be >= 1 (got " + std::to_string(options.auto_rebuild_sah_ratio) +
+                 ")");
+  const auto start = Clock::now();
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  built_ = false;
+  options_ = options;
+  shape_ = rt::scene_shape(scene);
+  mesh_names_.clear();
+  meshes_.clear();
+  meshes_.resize(scene.meshes.size());
+  device_sah_.resize(2 * scene.meshes.size());
+  host_sah_.reset(2 * scene.meshes.size());
+  sah_copied_ = false;
+  for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    MeshState& state = meshes_[m];
+    mesh_names_.push_back(mesh.name);
+    state.deformable = mesh.deformable;
+    state.mesh.upload(accel::make_indexed_mesh(mesh.positions, mesh.indices), stream_);
+    if (builds_on_gpu(options_.builder)) {
+      state.gpu_builder.emplace(gpu_builder_of(options_.builder), options_.build);
+    } else {
+      state.host_positions = mesh.positions;
+      state.host_indices = mesh.indices;
+    }
+    rebuild_mesh(m);
+  }
+  upload_blas_views();
+  host_instances_.clear();
+  for (const Instance& instance : scene.instances)
+    host_instances_.push_back(accel::make_instance(instance.mesh, instance.transform));
+  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_);
+  instance_boxes_.resize(host_instances_.size());
+  launch_instance_world_boxes(instances_.data(), static_cast<uint32_t>(host_instances_.size()), blas_views_.data(),
+                              instance_boxes_.data(), stream_);
+  tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
+  tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_);
+  overflow_.resize(1);
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  build_ms_ = ms_since(start);
+  rebuilds_ = refits_ = 0;
+  built_ = true;
+}
+
+void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
+  update_timer_.start(stream_);
+  bool rebuilt_any = false;
+  // Automatic: last update's SAH costs are in host memory by now (the copy was queued a frame ago),
+  // so waiting for them costs nothing in a frame loop.
+  if (policy == rt::UpdatePolicy::automatic && sah_copied_) GLINT_CUDA_CHECK(cudaEventSynchronize(sah_ready_));
+  for (uint32_t m : dirty_meshes) {
+    bool rebuild = policy == rt::UpdatePolicy::rebuild;
+    if (policy == rt::UpdatePolicy::automatic && sah_copied_) {
+      const float at_rebuild = host_sah_[2 * m];
+      rebuild = at_rebuild > 0.0f && host_sah_[2 * m + 1] > options_.auto_rebuild_sah_ratio * at_rebuild;
+    }
+    if (rebuild) {
+      rebuild_mesh(m);
+      rebuilt_any = true;
+      ++rebuilds_;
+    } else {
+      refit_mesh(m);
+      ++refits_;
+    }
+  }
+  if (rebuilt_any) upload_blas_views();
+  launch_instance_world_boxes(instances_.data(), static_cast<uint32_t>(host_instances_.size()), blas_views_.data(),
+                              instance_boxes_.data(), stream_);
+  if (policy == rt::UpdatePolicy::rebuild)
+    tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_);
+  else
+    refit_gpu(tlas_, instance_boxes_.data(), tlas_refit_counters_, stream_);
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(host_sah_.data(), device_sah_.data(), device_sah_.bytes(), cudaMemcpyDeviceToHost,
+                                   stream_));
+  GLINT_CUDA_CHECK(cudaEventRecord(sah_ready_, stream_));
+  sah_copied_ = true;
+  update_timer_.stop(stream_);
+}
+
+void CudaRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
+  require_built("update()");
+  rt::check_update(name(), shape_, scene, dirty_meshes);
+  require_refittable(dirty_meshes, policy);
+  for (uint32_t m : dirty_meshes) {
+    MeshState& state = meshes_[m];
+    const std::vector<vec3>& positions = scene.meshes[m].positions;
+    state.mesh.positions.upload(std::span<const vec3>(positions), stream_);
+    if (!state.gpu_builder) {
+      std::copy(positions.begin(), positions.end(), state.host_positions.begin());
+      state.host_positions_current = true;
+    }
+  }
+  // Transforms may have moved too: re-read them all, the instance list is small.
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    host_instances_[i] = accel::make_instance(scene.instances[i].mesh, scene.instances[i].transform);
+  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_);
+  update_structures(dirty_meshes, policy);
+}
+
+void CudaRayTracer::update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
+  require_built("update_device()");
+  for (uint32_t m : dirty_meshes)
+    if (m >= meshes_.size())
+      fail_message("rt cuda: dirty mesh index " + std::to_string(m) + " out of range (" +
+                   std::to_string(meshes_.size()) + " meshes)");
+  require_refittable(dirty_meshes, policy);
+  update_structures(dirty_meshes, policy);
+}
+
+vec3* CudaRayTracer::device_positions(uint32_t mesh) {
+  require_built("device_positions()");
+  if (mesh >= meshes_.size())
+    fail_message("rt cuda: mesh index " + std::to_string(mesh) + " out of range (" + std::to_string(meshes_.size()) +
+                 " meshes)");
+  // The caller writes them on the GPU: a CPU builder must read them back before its next rebuild.
+  if (!meshes_[mesh].gpu_builder) meshes_[mesh].host_positions_current = false;
+  return meshes_[mesh].mesh.positions.data();
+}
+
+void CudaRayTracer::check_overflow() const {
+  uint32_t overflowed = 0;
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, overflow_.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, stream_));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  if (overflowed)
+    fail_message("rt cuda: a traversal stack overflowed (a BVH deeper than " + std::to_string(accel::kMaxBvhDepth) +
+                 " levels, from the " + std::string(accel::builder_name(options_.builder)) +
+                 " builder); its hits are wrong: use another builder");
+}
+
+void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
+  require_built("trace_closest()");
+  if (rays.size() != hits.size())
+    fail_message("rt cuda: " + std::to_string(rays.size()) + " rays but " + std::to_string(hits.size()) + " hits");
+  if (rays.empty()) return;
+  if (rays.size() > 0xFFFFFFFFu) fail_message("rt cuda: more than 2^32 - 1 rays in one call");
+  const auto count = static_cast<uint32_t>(rays.size());
+  host_rays_.upload(rays, stream_);
+  host_hits_.resize(count);
+  overflow_.fill_zero(stream_);
+  trace_timer_.start(stream_);
+  launch_trace_closest(tlas_view(), host_rays_.data(), host_hits_.data(), nullptr, count, overflow_.data(), stream_);
+  trace_timer_.stop(stream_);
+  GLINT_CUDA_CHECK(
+      cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_));
+  check_overflow();
+}
+
+void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                         uint32_t capacity) {
+  require_built("trace_closest_device()");
+  overflow_.fill_zero(stream_);
+  trace_timer_.start(stream_);
+  launch_trace_closest(tlas_view(), rays, hits, ray_count, capacity, overflow_.data(), stream_);
+  trace_timer_.stop(stream_);
+}
+
+double CudaRayTracer::last_trace_ms() {
+  const double ms = trace_timer_.elapsed_ms();
+  if (built_) check_overflow();
+  return ms;
+}
+
+rt::RayTracerStats CudaRayTracer::stats() const {
+  rt::RayTracerStats stats;
+  stats.backend = std::string(name());
+  stats.build_ms = build_ms_;
+  stats.last_update_ms = update_timer_.elapsed_ms();
+  stats.rebuilds = rebuilds_;
+  stats.refits = refits_;
+  if (!built_) return stats;
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  uint64_t bytes = tlas_.memory_bytes() + instances_.bytes() + blas_views_.bytes() + instance_boxes_.bytes();
+  for (uint32_t m = 0; m < meshes_.size(); ++m) {
+    const MeshState& state = meshes_[m];
+    bytes += state.bvh.memory_bytes() + state.mesh.positions.bytes() + state.mesh.indices.bytes();
+    // The SAH costs of meshes updated since build() are in host memory (sah_ready_ has passed).
+    if (!state.deformable || !sah_copied_ || host_sah_[2 * m] <= 0.0f) continue;
+    const double drift = static_cast<double>(host_sah_[2 * m + 1]) / static_cast<double>(host_sah_[2 * m]);
+    stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);
+  }
+  stats.memory_bytes = bytes;
+  return stats;
+}
+
+}  // namespace
+
+std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer() {
+  require_cuda_gpu("--backend cuda");
+  return std::make_unique<CudaRayTracer>();
+}
+
+}  // namespace glint::cuda

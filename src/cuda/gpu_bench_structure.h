@@ -1,0 +1,48 @@
+#pragma once
+// One single-level structure on the GPU, for accel-bench's `--backend cuda` rows: a mesh of world
+// triangles, its BVH built on the GPU (lbvh, ploc) or on the CPU and uploaded (every other builder
+// of the menu), refitted on the GPU, and traced by the CUDA kernel the cuda backend uses.
+//
+// What the times measure (GPU times from CUDA events unless said otherwise), chosen to match what a
+// frame of the renderer pays, where vertices, rays and hits already live on the GPU:
+//  - build: GPU builders: triangle boxes + build, the mesh already uploaded; CPU builders: the CPU
+//    build's wall time plus the upload of the BVH.
+//  - refit: triangle boxes + bottom-up refit, the moved vertices already uploaded.
+//  - trace: the closest-hit kernel alone; the rays are uploaded once per distinct ray array.
+// Plain C++ (no CUDA headers); without CUDA or a GPU the constructor throws glint::Error.
+#include "accel/build_options.h"
+#include "accel/builder.h"
+#include "accel/bvh.h"
+#include "accel/ray.h"
+#include "accel/triangle_mesh.h"
+
+#include <memory>
+#include <optional>
+#include <span>
+
+namespace glint::cuda {
+
+class GpuBenchStructure {
+public:
+  explicit GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options = {});
+  ~GpuBenchStructure();
+  GpuBenchStructure(const GpuBenchStructure&) = delete;
+  GpuBenchStructure& operator=(const GpuBenchStructure&) = delete;
+
+  // Uploads `mesh` and builds over it; returns the build time in ms (see above).
+  double build(const accel::TriangleMesh& mesh);
+  // Uploads the moved vertices (same triangles) and refits; returns ms, or nullopt when the structure
+  // cannot be refitted (sbvh).
+  std::optional<double> refit(const accel::TriangleMesh& mesh);
+  // hits[i] = closest hit of rays[i]; returns the kernel's time in ms.
+  double trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits);
+  // The structure, downloaded (node count, SAH, validation).
+  accel::Bvh download() const;
+  std::size_t memory_bytes() const;
+
+private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace glint::cuda

@@ -1,0 +1,28 @@
+#pragma once
+// The closest-hit kernel over a ray list in device memory (the CUDA backend's trace), and the
+// instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
+#include "accel/ray.h"
+#include "accel/tlas_traverse.h"
+
+#include <cuda_runtime.h>
+
+#include <cstdint>
+
+namespace glint::cuda {
+
+// hits[i] = closest hit of rays[i] through `tlas` (device views) for i < min(*ray_count, capacity);
+// ray_count may be null (then `capacity` rays). Sets *overflow (device memory) to 1 when some ray's
+// traversal stack overflowed (its hit may then be wrong). Asynchronous on `stream`.
+void launch_trace_closest(const accel::TlasView& tlas, const accel::Ray* rays, accel::Hit* hits,
+                          const uint32_t* ray_count, uint32_t capacity, uint32_t* overflow, cudaStream_t stream);
+
+// The same over one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
+void launch_trace_closest(const accel::Blas& blas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                          uint32_t capacity, uint32_t* overflow, cudaStream_t stream);
+
+// boxes[i] = world box of instance i: its BLAS's root box (blases[instances[i].blas].bvh.nodes[0],
+// device memory) transformed by object_to_world; empty for an empty BLAS. Asynchronous on `stream`.
+void launch_instance_world_boxes(const accel::Instance* instances, uint32_t instance_count,
+                                 const accel::Blas* blases, Aabb* boxes, cudaStream_t stream);
+
+}  // namespace glint::cuda

@@ -1,0 +1,126 @@
+#pragma once
+// Single-ray BVH traversal on the GPU, one thread per ray. The same algorithm as accel/traverse.h
+// (depth first, nearer child first, the farther child pushed with its entry distance and skipped on
+// pop once a closer hit is known) and the same conservative box and watertight triangle tests, so
+// the hits equal the CPU backend's; what differs is what the GPU needs:
+//  - a node pair is fetched as four 16-byte read-only loads (siblings are adjacent in the layout);
+//  - the stack is guarded: GPU builders (ploc) do not bound their depth in advance, so a push past
+//    kGpuStackSize sets `overflow` (reported as an error by the caller) instead of writing past the
+//    stack. CPU builders and lbvh never get there (depth <= accel::kMaxBvhDepth).
+// CUDA-only header: include it from .cu files.
+#include "accel/bvh_node.h"
+#include "accel/intersect_box.h"
+#include "accel/intersect_triangle.h"
+#include "accel/ray.h"
+#include "accel/tlas_traverse.h"
+
+#include <cstdint>
+
+namespace glint::cuda {
+
+inline constexpr uint32_t kGpuStackSize = accel::kMaxBvhDepth;
+
+// The node's box and payload through the read-only cache.
+__device__ inline accel::BvhNode load_node(const accel::BvhNode* nodes, uint32_t index) {
+  const float4* raw = reinterpret_cast<const float4*>(nodes + index);
+  const float4 low = __ldg(raw);
+  const float4 high = __ldg(raw + 1);
+  accel::BvhNode node;
+  node.bounds_min = vec3(low.x, low.y, low.z);
+  node.first = __float_as_uint(low.w);
+  node.bounds_max = vec3(high.x, high.y, high.z);
+  node.prim_count = __float_as_uint(high.w);
+  return node;
+}
+
+// Visits the primitives of the leaves the segment [t_min, t_max] enters, nearest subtree first;
+// intersect_prim(prim, t_max) returns true on a hit and may lower t_max. Returns whether anything
+// was hit; sets overflow (and stops) when the stack would overflow.
+template <typename IntersectPrim>
+__device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& origin, const vec3& direction,
+                                        float t_min, float& t_max, bool& overflow, IntersectPrim&& intersect_prim) {
+  if (bvh.node_count == 0) return false;
+  const accel::BoxRay box_ray = accel::make_box_ray(origin, direction);
+  float t_entry;
+  if (!accel::intersect_box(box_ray, load_node(bvh.nodes, 0), t_min, t_max, t_entry)) return false;
+
+  uint32_t stack_node[kGpuStackSize];
+  float stack_entry[kGpuStackSize];
+  uint32_t stack_size = 0;
+  accel::BvhNode node = load_node(bvh.nodes, 0);
+  bool hit = false;
+  for (;;) {
+    if (node.is_leaf()) {
+      const uint32_t end = node.first + node.prim_count;
+      for (uint32_t slot = node.first; slot != end; ++slot)
+        if (intersect_prim(__ldg(bvh.prim_indices + slot), t_max)) hit = true;
+    } else {
+      const accel::BvhNode left = load_node(bvh.nodes, node.left());
+      const accel::BvhNode right = load_node(bvh.nodes, node.right());
+      float t_left, t_right;
+      const bool hit_left = accel::intersect_box(box_ray, left, t_min, t_max, t_left);
+      const bool hit_right = accel::intersect_box(box_ray, right, t_min, t_max, t_right);
+      if (hit_left && hit_right) {
+        if (stack_size == kGpuStackSize) {
+          overflow = true;
+          return hit;
+        }
+        const bool right_first = t_right < t_left;
+        stack_node[stack_size] = right_first ? node.left() : node.right();
+        stack_entry[stack_size] = right_first ? t_left : t_right;
+        ++stack_size;
+        node = right_first ? right : left;
+        continue;
+      }
+      if (hit_left || hit_right) {
+        node = hit_left ? left : right;
+        continue;
+      }
+    }
+    // Pop the next subtree that may still hold something closer than t_max (with the box test's
+    // slack).
+    for (;;) {
+      if (stack_size == 0) return hit;
+      --stack_size;
+      if (stack_entry[stack_size] <= t_max * accel::kSlabFarScale) break;
+    }
+    node = load_node(bvh.nodes, stack_node[stack_size]);
+  }
+}
+
+// Closest hit in one BLAS (object space). Updates `hit` (t, prim, u, v) when something closer than
+// t_max is found, with accel::intersect_closest's tie rule (equal t: the first found stays).
+__device__ inline bool gpu_intersect_closest(const accel::Blas& blas, const vec3& origin, const vec3& direction,
+                                             float t_min, float& t_max, accel::Hit& hit, bool& overflow) {
+  const accel::WatertightRay ray = accel::make_watertight_ray(origin, direction);
+  return gpu_traverse_bvh(blas.bvh, origin, direction, t_min, t_max, overflow, [&](uint32_t prim, float& t_limit) {
+    accel::TriangleHit tri_hit;
+    if (!accel::intersect_triangle(ray, blas.mesh.triangle(prim), t_min, t_limit, tri_hit)) return false;
+    if (tri_hit.t == t_limit && hit.valid()) return false;
+    t_limit = tri_hit.t;
+    hit.t = tri_hit.t;
+    hit.prim = prim;
+    hit.u = tri_hit.u;
+    hit.v = tri_hit.v;
+    return true;
+  });
+}
+
+// Two levels: the TLAS over instances, each instance's BLAS entered with the ray moved into its
+// object space (t is the same in both spaces). Hit.instance is the instance index.
+__device__ inline accel::Hit gpu_trace_closest(const accel::TlasView& tlas, const accel::Ray& ray, bool& overflow) {
+  accel::Hit hit;
+  float t_max = ray.t_max;
+  gpu_traverse_bvh(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow, [&](uint32_t index, float& t_limit) {
+    const accel::Instance& instance = tlas.instances[index];
+    const vec3 origin(instance.world_to_object * vec4(ray.origin, 1.0f));
+    const vec3 direction(instance.world_to_object * vec4(ray.direction, 0.0f));
+    if (!gpu_intersect_closest(tlas.blases[instance.blas], origin, direction, ray.t_min, t_limit, hit, overflow))
+      return false;
+    hit.instance = index;
+    return true;
+  });
+  return hit;
+}
+
+}  // namespace glint::cuda

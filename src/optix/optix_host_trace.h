@@ -1,0 +1,30 @@
+#pragma once
+// The host-memory closest-hit query of the optix backends (RayTracer::trace_closest, accel-bench):
+// the rays are uploaded, traced by the pipeline over `root`, and the hits downloaded. The device
+// buffers are kept, so repeated traces of the same size allocate nothing. Needs the CUDA headers.
+#include "accel/ray.h"
+#include "cuda/device_buffer.h"
+#include "optix/optix_trace_pipeline.h"
+
+#include <cuda_runtime.h>
+#include <optix_types.h>
+
+#include <cstdint>
+#include <span>
+
+namespace glint::optix {
+
+class HostTraceStaging {
+public:
+  // hits[i] = closest hit of rays[i]; waits for the GPU. glint::Error when the spans differ in size
+  // or hold more than 2^32 - 1 rays.
+  void trace(TraceClosestPipeline& pipeline, OptixTraversableHandle root, std::span<const accel::Ray> rays,
+             std::span<accel::Hit> hits, cudaStream_t stream);
+
+private:
+  cuda::DeviceBuffer<accel::Ray> rays_;
+  cuda::DeviceBuffer<accel::Hit> hits_;
+  cuda::DeviceBuffer<std::uint32_t> count_;
+};
+
+}  // namespace glint::optix
