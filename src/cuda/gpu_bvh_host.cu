@@ -9,13 +9,16 @@
 namespace glint::cuda {
 namespace {
 
-// A stream and two events of its own, so the work of one session never waits on another's.
+// A stream and two events of its own. The stream is a blocking one (it synchronises with the
+// legacy default stream) on purpose: GpuBvh::upload copies the parent links with a plain
+// cudaMemcpy, whose DMA from pageable memory may still be running when it returns, and the refit
+// on this stream must not start before it landed.
 struct TimedStream {
   cudaStream_t stream = nullptr;
   cudaEvent_t start = nullptr, stop = nullptr;
 
   TimedStream() {
-    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking));
+    GLINT_CUDA_CHECK(cudaStreamCreate(&stream));
     GLINT_CUDA_CHECK(cudaEventCreate(&start));
     GLINT_CUDA_CHECK(cudaEventCreate(&stop));
   }
@@ -67,7 +70,8 @@ struct DeviceStructure {
   }
 
   accel::Bvh download() const {
-    const uint32_t depth = measure_depth(bvh, timing.stream);  // waits for the stream
+    GLINT_CUDA_CHECK(cudaStreamSynchronize(timing.stream));  // GpuBvh::download copies on the default stream
+    const uint32_t depth = measure_depth(bvh, timing.stream);
     accel::Bvh host = bvh.download(builder_name.c_str());
     host.depth = depth;
     return host;
