@@ -47,7 +47,11 @@ std::size_t column(const std::vector<std::string>& header, const std::string& na
   return static_cast<std::size_t>(found - header.begin());
 }
 
-bool matplotlib_available() { return std::system("python3 -c 'import matplotlib' >/dev/null 2>&1") == 0; }
+// As glint looks for it: PATH's python3, else Debian's.
+bool matplotlib_available() {
+  return std::system("python3 -c 'import matplotlib' >/dev/null 2>&1") == 0 ||
+         std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
+}
 
 const nlohmann::json& cell_named(const nlohmann::json& summary, const std::string& id) {
   for (const nlohmann::json& cell : summary["cells"])
@@ -74,9 +78,13 @@ void check_frame_times_cell(const fs::path& out, const nlohmann::json& cell) {
     const std::string& rays = csv[row][column(header, "rays_traced")];
     const std::string& reflective = csv[row][column(header, "reflective_pixels")];
     const std::string& failed = csv[row][column(header, "ssr_failed_pixels")];
-    if (mode == "ssr") EXPECT_EQ(rays, "") << "ssr traces no rays";
-    if (mode == "hybrid") EXPECT_EQ(rays, failed) << "hybrid traces exactly SSR's failed pixels";
-    if (mode == "rt") EXPECT_EQ(rays, reflective) << "rt traces every reflective pixel";
+    if (mode == "ssr") {
+      EXPECT_EQ(rays, "") << "ssr traces no rays";
+    } else if (mode == "hybrid") {
+      EXPECT_EQ(rays, failed) << "hybrid traces exactly SSR's failed pixels";
+    } else {
+      EXPECT_EQ(rays, reflective) << "rt traces every reflective pixel";
+    }
   }
   EXPECT_EQ(cell["frames"], 4);
   const nlohmann::json& ms = cell["frame_ms"];
@@ -223,7 +231,9 @@ TEST_F(BenchCli, QuickRunWritesEveryOutputResumesAndRemeasuresADamagedCell) {
   EXPECT_NE(third.err.find("fig5-cpu-sah.csv"), std::string::npos) << "a warning names the damaged cell";
   EXPECT_EQ(read_csv(damaged).size(), 5u) << "the cell is whole again";
   for (const auto& [path, time] : cell_csv_times(out))
-    if (path != damaged) EXPECT_EQ(time, before_third.at(path)) << path;
+    if (path != damaged) {
+      EXPECT_EQ(time, before_third.at(path)) << path;
+    }
 }
 
 TEST(BenchCliErrors, BadFlagsAndUnknownExperimentAreOneLineAndWriteNothing) {

@@ -128,7 +128,8 @@ nlohmann::json cell_summary(const Cell& cell, const CellOutcome& outcome, const 
   }
   const nlohmann::json side = read_side_file(cell_json_path(out, cell));
   if (side.is_object()) {
-    for (const char* key : {"scene", "ray_tracer", "warmup_frames", "wall_seconds"})
+    if (side.contains("scene")) entry["scene_stats"] = side["scene"];
+    for (const char* key : {"ray_tracer", "warmup_frames", "wall_seconds"})
       if (side.contains(key)) entry[key] = side[key];
   }
   return entry;

@@ -26,7 +26,8 @@ std::string_view state_name(CellOutcome::State state);
 // The summary entry of `cell`: what it measures and its outcome; for a done frame-times cell the
 // statistics of its frame times (cpu_frame_ms: wall clock of the whole frame, deform and update
 // included, as the paper's frame time), the means of its other columns and the interval means; for
-// a done quality cell its rows; and the side file's tracer statistics. `interval`: measured frames
+// a done quality cell its rows; and the side file's scene statistics (scene_stats) and tracer
+// statistics (ray_tracer). `interval`: measured frames
 // per interval mean. glint::Error when a done cell's files cannot be read.
 nlohmann::json cell_summary(const Cell& cell, const CellOutcome& outcome, const std::filesystem::path& out,
                             std::size_t interval);

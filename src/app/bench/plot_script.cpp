@@ -24,11 +24,23 @@ std::string plot_bench_charts(const std::filesystem::path& out) {
   const std::filesystem::path script = out / "plot_bench.py";
   write_file_atomically(script, kPlotBenchScript);
   const std::string by_hand = fmt::format("python3 {} {}", script.string(), out.string());
-  const std::optional<ProgramResult> check = run_program({"python3", "-c", "import matplotlib"});
-  if (!check) return fmt::format("charts not made: python3 is not on PATH; install python3-matplotlib and run: {}", by_hand);
-  if (check->exit_code != 0)
+  // PATH's python3 first; then Debian's, where python3-matplotlib installs, for a PATH whose python3
+  // is another installation (pyenv, a virtual environment) without matplotlib.
+  std::optional<std::string> python;
+  bool any_python = false;
+  for (const char* candidate : {"python3", "/usr/bin/python3"}) {
+    const std::optional<ProgramResult> check = run_program({candidate, "-c", "import matplotlib"});
+    any_python = any_python || check.has_value();
+    if (check && check->exit_code == 0) {
+      python = candidate;
+      break;
+    }
+  }
+  if (!any_python)
+    return fmt::format("charts not made: python3 is not on PATH; install python3-matplotlib and run: {}", by_hand);
+  if (!python)
     return fmt::format("charts not made: python3 has no matplotlib; install python3-matplotlib and run: {}", by_hand);
-  const std::optional<ProgramResult> plot = run_program({"python3", script.string(), out.string()});
+  const std::optional<ProgramResult> plot = run_program({*python, script.string(), out.string()});
   if (!plot || plot->exit_code != 0)
     return fmt::format("charts not made: plot_bench.py failed ({}); run it by hand: {}",
                        plot ? last_line(plot->output) : std::string("could not start"), by_hand);
