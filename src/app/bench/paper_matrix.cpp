@@ -49,8 +49,10 @@ public:
       const std::string update = deform ? options_.updates.front() : "";
       for (const char* mode : {"ssr", "hybrid", "rt"}) {
         const bool traces = std::string(mode) != "ssr";
-        Cell cell = make("fig12", options_.simple_scene, mode, traces && structure ? *structure : Structure{},
-                         traces ? update : "", deform);
+        // ssr traces no rays, but keeps the structure's backend: it decides where the meshes deform
+        // (a cuda structure deforms them on the GPU), which must match the other two modes.
+        Cell cell = make("fig12", options_.simple_scene, mode, structure.value_or(Structure{}), traces ? update : "",
+                         deform);
         cell.id = fmt::format("fig12-{}-{}", deform ? "deforming" : "static", mode);
         if (traces && !structure) cell.skip_reason = "no backend of --backends is available";
         else if (traces) cell.skip_reason = skip_reason(options_, *structure, update);

@@ -44,7 +44,7 @@ struct Cell {
   CellKind kind = CellKind::frame_times;
   std::string scene;        // as given on the command line (preset name or file)
   std::string reflections;  // frame_times: ssr|hybrid|rt; quality: "" (renders all three)
-  Structure structure;      // empty backend for ssr cells (no rays)
+  Structure structure;      // ssr cells trace nothing; their backend only decides where meshes deform
   std::string update;       // rebuild|refit for deforming cells, "" for static ones
   bool deform = false;
   bool trace_deformable_only = false;  // fig10
