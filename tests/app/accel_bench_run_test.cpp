@@ -179,7 +179,9 @@ TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
       sbvh_seen = true;
       EXPECT_FALSE(deform.refit_ms.has_value());
     }
-    if (deform.name == "cuda-lbvh") EXPECT_TRUE(deform.refit_ms.has_value());
+    if (deform.name == "cuda-lbvh") {
+      EXPECT_TRUE(deform.refit_ms.has_value());
+    }
   }
   EXPECT_TRUE(sbvh_seen);
 }

@@ -90,7 +90,9 @@ void check_updates(Scene scene, accel::BvhBuilder builder, UpdatePolicy policy) 
   }
   const RayTracerStats stats = tracer->stats();
   EXPECT_EQ(stats.rebuilds + stats.refits, 3 * scene.deformable_meshes().size());
-  if (policy == UpdatePolicy::rebuild) EXPECT_EQ(stats.refits, 0u);
+  if (policy == UpdatePolicy::rebuild) {
+    EXPECT_EQ(stats.refits, 0u);
+  }
   if (policy == UpdatePolicy::refit) {
     EXPECT_EQ(stats.rebuilds, 0u);
     ASSERT_TRUE(stats.blas_sah_drift.has_value());
