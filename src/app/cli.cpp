@@ -1,6 +1,7 @@
 #include "app/cli.h"
 
 #include "app/accel_bench_command.h"
+#include "app/bench_command.h"
 #include "app/compare_command.h"
 #include "app/devices_command.h"
 #include "app/info_command.h"
@@ -54,6 +55,8 @@ int run_cli(int argc, char** argv) {
   add_compare_command(app, compare);
   AccelBenchOptions accel_bench;
   add_accel_bench_command(app, accel_bench);
+  BenchOptions bench;
+  add_bench_command(app, bench);
 
   try {
     app.parse(argc, argv);
@@ -78,6 +81,10 @@ int run_cli(int argc, char** argv) {
     }
     if (app.got_subcommand("compare")) return run_compare_command(compare);
     if (app.got_subcommand("accel-bench")) return run_accel_bench_command(accel_bench);
+    if (app.got_subcommand("bench")) {
+      bench.command_line = command_line_text(argc, argv);
+      return run_bench_command(bench);
+    }
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;

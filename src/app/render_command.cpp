@@ -1,5 +1,6 @@
 #include "app/render_command.h"
 
+#include "app/frame_loop.h"
 #include "app/frame_selection.h"
 #include "app/output_folder.h"
 #include "app/render_run_record.h"
@@ -10,22 +11,15 @@
 #include "core/progress_bar.h"
 #include "cuda/device_query.h"
 #include "gl/egl_context.h"
-#include "gl/gpu_timer.h"
 #include "accel/builder.h"
 #include "render/frame_pipeline.h"
-#include "render/gpu_deformation.h"
 #include "rt/ray_tracer.h"
 #include "scene/camera_path.h"
 #include "scene/load_scene.h"
-#include "scene/sine_deformer.h"
-
-#include <epoxy/gl.h>
 
 #include <chrono>
-#include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace glint {
@@ -41,7 +35,18 @@ double milliseconds_since(Clock::time_point start) {
 // list in place and follow the GPU deformer.
 bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "optix"; }
 
-render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
+std::string builder_names() {
+  std::string names;
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) {
+    if (!names.empty()) names += ", ";
+    names += accel::builder_name(builder);
+  }
+  return names;
+}
+
+}  // namespace
+
+render::FramePipelineSettings render_pipeline_settings(const RenderOptions& options) {
   render::FramePipelineSettings settings;
   settings.reflections = render::parse_reflection_mode(options.reflections);
   settings.raster.shadow_map_size = options.shadow_map_size;
@@ -84,41 +89,6 @@ render::FramePipelineSettings pipeline_settings(const RenderOptions& options) {
   return settings;
 }
 
-struct DeformTimes {
-  double deform_ms = 0.0;        // cpu: the deformers and the GL vertex upload (wall); gpu: the kernels (GPU time)
-  double accel_update_ms = 0.0;  // the ray tracer's structures (wall)
-};
-
-// Moves the deformable meshes to `frame` and updates the ray tracer's structures: on the CPU (then
-// the new vertices are copied to GL and the tracer) or, with a GPU deformer, on the GPU (nothing is
-// copied; the kernels' time is read after the frame, see gpu_deform_ms).
-DeformTimes deform(SceneDeformers* deformers, cuda::GpuSceneDeformer* gpu_deformer, Scene& scene,
-                   render::FramePipeline& pipeline, int frame) {
-  if (deformers == nullptr) return {};
-  DeformTimes times;
-  if (gpu_deformer != nullptr) {
-    const std::vector<std::uint32_t> dirty = gpu_deformer->apply(frame);
-    times.accel_update_ms = pipeline.update_ray_tracer_on_device(dirty);
-    return times;
-  }
-  const auto start = Clock::now();
-  const std::vector<std::uint32_t> dirty = deformers->apply(scene, frame);
-  pipeline.upload_meshes(dirty);
-  times.deform_ms = milliseconds_since(start);
-  times.accel_update_ms = pipeline.update_ray_tracer(dirty);
-  return times;
-}
-
-std::string builder_names() {
-  std::string names;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) {
-    if (!names.empty()) names += ", ";
-    names += accel::builder_name(builder);
-  }
-  return names;
-}
-
-}  // namespace
 
 bool deforms_on_gpu(const RenderOptions& options) {
   return options.deform_on.empty() ? is_gpu_backend(options.backend) : options.deform_on == "gpu";
@@ -205,29 +175,27 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 }
 
 int run_render_command(const RenderOptions& options) {
-  const render::FramePipelineSettings settings = pipeline_settings(options);
+  const render::FramePipelineSettings settings = render_pipeline_settings(options);
   const FrameSelection selection = options.frames.empty() ? FrameSelection::all() : FrameSelection::parse(options.frames);
 
   Scene scene = load_scene(options.scene);
   const WalkthroughAnimation animation(scene);
   const std::vector<int> frames = selection.resolve(animation.frame_count());
-  std::optional<SceneDeformers> deformers;
-  if (options.deform == "on" && !scene.deformable_meshes().empty()) deformers.emplace(scene);
+  const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracing(settings.reflections)) {
     rt::check_backend_built(options.backend);
     if (is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
   }
-  if (deformers && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
+  if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
   const OutputFolder out(options.out);
   HeadlessGlContext context;  // logs its renderer with --verbose
-  render::FramePipeline pipeline(scene, options.width, options.height, settings);
-  std::unique_ptr<cuda::GpuSceneDeformer> gpu_deformer;
-  if (deformers && deforms_on_gpu(options)) gpu_deformer = render::make_gpu_deformer(*deformers, pipeline);
-  GpuTimer timer(pass_timing_for_renderer(context.renderer()));
+  FrameLoop loop(scene, settings, {options.width, options.height, options.deform == "on", deforms_on_gpu(options)},
+                 pass_timing_for_renderer(context.renderer()));
+  render::FramePipeline& pipeline = loop.pipeline();
 
-  RenderRunRecord record(options, scene, context, timer.method(), frames);
+  RenderRunRecord record(options, scene, context, loop.pass_timing(), frames);
   if (pipeline.ray_tracer() != nullptr) record.set_ray_tracer(settings.ray_tracing, pipeline.ray_tracer()->stats());
   CsvWriter timings(out.path() / "timings.csv", RenderRunRecord::timings_header());
   std::optional<FfmpegVideoWriter> video;
@@ -237,18 +205,7 @@ int run_render_command(const RenderOptions& options) {
   ProgressBar progress("render", frames.size());
   const auto run_start = Clock::now();
   for (const int frame : frames) {
-    const auto frame_start = Clock::now();
-    DeformTimes deform_times = deform(deformers ? &*deformers : nullptr, gpu_deformer.get(), scene, pipeline, frame);
-    timer.begin_frame();
-    pipeline.render(animation.at(frame), &timer);
-    timer.end_frame();
-    glFinish();  // the CPU frame time includes the GPU finishing the frame
-    const double cpu_frame_ms = milliseconds_since(frame_start);
-    if (gpu_deformer) deform_times.deform_ms = gpu_deformer->last_apply_ms();
-    // A GPU backend's update only enqueues work: report its GPU time instead.
-    if (rt::DeviceTracing* device = pipeline.device_tracing(); device && deformers)
-      if (const std::optional<double> update_ms = device->last_update_ms()) deform_times.accel_update_ms = *update_ms;
-
+    const FrameMeasurement measured = loop.run(frame);
     if (!options.timings_only) {
       const ImageRgba8 image = pipeline.read_final();
       write_png(out.frame_path(frame), image);
@@ -256,12 +213,7 @@ int run_render_command(const RenderOptions& options) {
     }
     if (options.debug_views)
       for (const render::DebugView& view : pipeline.read_debug_views()) write_png(out.debug_view_path(frame, view.name), view.image);
-
-    timer.wait_for_all();
-    for (FrameTimes& times : timer.take_completed())
-      timings.add_row(record.add_frame({frame, std::move(times), cpu_frame_ms, deform_times.deform_ms,
-                                        deform_times.accel_update_ms, pipeline.read_counts(),
-                                        pipeline.ray_trace_stats()}));
+    timings.add_row(record.add_frame(measured));
     progress.tick();
   }
   progress.finish();

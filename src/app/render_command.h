@@ -2,6 +2,8 @@
 // `glint render [scene]`: renders frames of a scene's walkthrough headless and writes PNG frames,
 // timings.csv (one row per frame: GPU ms per pass, CPU frame ms, pixel counts), run.json (how the
 // run was made), optionally debug views and an MP4. docs/render-command.md describes the outputs.
+#include "render/frame_pipeline.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -35,6 +37,11 @@ struct RenderOptions {
   float ssr_confidence = 0.9f;
   std::string command_line;       // for run.json, set by the CLI
 };
+
+// The frame pipeline's settings for `options`, checked: glint::Error with one line naming the flag for
+// combinations that cannot run (--accel with embree, sbvh with refit on deforming meshes, --deform-on
+// gpu with a CPU backend). `glint bench` builds every cell's settings through it too.
+render::FramePipelineSettings render_pipeline_settings(const RenderOptions& options);
 
 // Whether the deformable meshes are posed on the GPU (--deform-on, resolved against --backend).
 bool deforms_on_gpu(const RenderOptions& options);

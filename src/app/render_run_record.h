@@ -2,6 +2,7 @@
 // What `glint render` records about a run: the timings.csv rows (one per frame) and run.json (the
 // command line, scene statistics, GL renderer, resolution, options, and per-pass means over the
 // frames). Kept apart from the render loop so the loop reads as the frame's steps.
+#include "app/frame_loop.h"
 #include "app/render_command.h"
 #include "core/csv_writer.h"
 #include "gl/egl_context.h"
@@ -26,16 +27,8 @@ public:
   RenderRunRecord(const RenderOptions& options, const Scene& scene, const HeadlessGlContext& context,
                   PassTimingMethod pass_timing, const std::vector<int>& frames);
 
-  // What one frame measured.
-  struct Frame {
-    int frame = 0;
-    FrameTimes times;                                    // GPU passes
-    double cpu_frame_ms = 0.0;                           // wall clock of the whole frame
-    double deform_ms = 0.0;                              // deformers + GPU vertex upload
-    double accel_update_ms = 0.0;                        // the ray tracer's update of deformed meshes
-    std::optional<render::SsrCounts> ssr_counts;         // with SSR
-    std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
-  };
+  // What one frame measured (FrameLoop::run).
+  using Frame = FrameMeasurement;
 
   // Column names of timings.csv: frame, <pass>_ms for every pass of render::kFramePassNames,
   // gpu_total_ms, cpu_frame_ms, deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,

@@ -1,9 +1,11 @@
 #include "render/ray_traced_reflections.h"
 
 #include "core/error.h"
+#include "rt/instance_subset_tracer.h"
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace glint::render {
 namespace {
@@ -17,6 +19,8 @@ double milliseconds_since(Clock::time_point start) {
 std::unique_ptr<rt::RayTracer> built_tracer(const Scene& scene, const RayTracingSettings& settings) {
   settings.validate();
   std::unique_ptr<rt::RayTracer> tracer = rt::make_ray_tracer(settings.backend);
+  if (!settings.traced_instances.empty())
+    tracer = std::make_unique<rt::InstanceSubsetTracer>(std::move(tracer), settings.traced_instances);
   tracer->build(scene, settings.accel);
   return tracer;
 }

@@ -1,0 +1,320 @@
+#include "app/bench_command.h"
+
+#include "accel/builder.h"
+#include "app/bench/backend_availability.h"
+#include "app/bench/bench_environment.h"
+#include "app/bench/bench_report.h"
+#include "app/bench/bench_summary.h"
+#include "app/bench/cell_run.h"
+#include "app/bench/paper_matrix.h"
+#include "app/bench/plot_script.h"
+#include "app/bench/resume.h"
+#include "app/output_folder.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress_bar.h"
+#include "gl/egl_context.h"
+#include "scene/load_scene.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <ctime>
+#include <map>
+#include <optional>
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+using bench::Cell;
+using bench::CellKind;
+using bench::CellOutcome;
+
+constexpr const char* kExperiments[] = {"paper"};
+
+// A cell of this run: what it is, its frames and what became of it.
+struct PlannedCell {
+  Cell cell;
+  std::vector<int> frames;
+  CellOutcome outcome;
+  bool to_run = false;
+};
+
+std::string trimmed(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const std::string& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
+}
+
+std::string utc_timestamp() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+void check_options(const BenchOptions& options) {
+  bool known = false;
+  for (const char* experiment : kExperiments) known = known || options.experiment == experiment;
+  if (!known) fail("--experiment: unknown experiment \"{}\" (known: paper)", options.experiment);
+}
+
+// The settings every kept cell must share with this run (resume.h).
+nlohmann::json run_settings(const BenchOptions& options) {
+  return {{"experiment", options.experiment}, {"scene", options.scene},     {"simple_scene", options.simple_scene},
+          {"width", options.width},           {"height", options.height},   {"frames", options.frames},
+          {"stride", options.stride},         {"warmup_frames", options.warmup},
+          {"shadow_map_size", options.shadow_map_size}};
+}
+
+std::vector<bench::RowKey> expected_rows(const PlannedCell& planned) {
+  std::vector<bench::RowKey> rows;
+  for (const int frame : planned.frames) {
+    if (planned.cell.kind == CellKind::frame_times) {
+      rows.push_back({std::to_string(frame)});
+      continue;
+    }
+    for (const char* mode : bench::kComparedModes) rows.push_back({std::to_string(frame), mode});
+  }
+  return rows;
+}
+
+// Skips what cannot run on these scenes and keeps what an earlier run finished.
+void plan_cell(PlannedCell& planned, const Scene& scene, const BenchOptions& options, const fs::path& out) {
+  const Cell& cell = planned.cell;
+  if (cell.skip_reason) {
+    planned.outcome = {CellOutcome::State::skipped, *cell.skip_reason};
+    return;
+  }
+  if (cell.deform && scene.deformable_meshes().empty()) {
+    planned.outcome = {CellOutcome::State::skipped, fmt::format("scene {} has no deformable meshes", cell.scene)};
+    return;
+  }
+  const int walkthrough_frames = scene.walkthrough.frame_count;
+  planned.frames = cell.kind == CellKind::quality ? bench::quality_frames(walkthrough_frames)
+                                                  : bench::strided_frames(walkthrough_frames, options.frames, options.stride);
+  if (planned.frames.empty()) {
+    planned.outcome = {CellOutcome::State::skipped,
+                       fmt::format("the walkthrough of {} has {} frames, none of the cell's", cell.scene, walkthrough_frames)};
+    return;
+  }
+  const fs::path csv = bench::cell_csv_path(out, cell);
+  if (const std::optional<bench::CsvTable> table = bench::read_csv_table(csv)) {
+    const std::optional<std::string> problem =
+        bench::finished_cell_problem(*table, bench::cell_csv_header(cell.kind), expected_rows(planned));
+    if (!problem) {
+      planned.outcome = {CellOutcome::State::done, "", true};
+      return;
+    }
+    log_warning("{}: not a finished cell of this run ({}); measuring it again", csv.string(), *problem);
+  }
+  planned.to_run = true;
+}
+
+void print_final_table(const std::vector<PlannedCell>& cells, const nlohmann::json& summary) {
+  fmt::print("{:<34} {:<8} {:>6} {:>10} {:>10} {:>10}\n", "cell", "status", "frames", "mean ms", "median", "p95");
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const nlohmann::json& entry = summary["cells"][i];
+    const std::string status = std::string(bench::state_name(cells[i].outcome.state)) + (cells[i].outcome.resumed ? "*" : "");
+    if (cells[i].outcome.state != CellOutcome::State::done) {
+      fmt::print("{:<34} {:<8} {}\n", cells[i].cell.id, status, cells[i].outcome.reason);
+    } else if (cells[i].cell.kind == CellKind::quality) {
+      std::string buckets;
+      for (const nlohmann::json& row : entry["rows"])
+        buckets += fmt::format(" {}@{}={:.2f}%", row["mode"].get<std::string>(), row["frame"].get<int>(),
+                               row["buckets_percent"]["mean"].get<double>());
+      fmt::print("{:<34} {:<8} {:>6} {}\n", cells[i].cell.id, status, entry["rows"].size() / 2, buckets);
+    } else {
+      const nlohmann::json& ms = entry["frame_ms"];
+      fmt::print("{:<34} {:<8} {:>6} {:>10.2f} {:>10.2f} {:>10.2f}\n", cells[i].cell.id, status,
+                 entry["frames"].get<int>(), ms["mean"].get<double>(), ms["median"].get<double>(), ms["p95"].get<double>());
+    }
+  }
+  bool resumed = false;
+  for (const PlannedCell& planned : cells) resumed = resumed || planned.outcome.resumed;
+  if (resumed) fmt::print("* kept from an earlier run in the same folder\n");
+}
+
+}  // namespace
+
+std::vector<std::string> parse_name_list(const std::string& flag, const std::string& text,
+                                         const std::vector<std::string>& known) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = trimmed(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (item.empty()) fail("{} \"{}\": empty item (expected a comma-separated list)", flag, text);
+    if (!known.empty() && std::find(known.begin(), known.end(), item) == known.end())
+      fail("{} \"{}\": unknown name \"{}\" (known: {})", flag, text, item, joined(known));
+    if (std::find(items.begin(), items.end(), item) != items.end()) fail("{} \"{}\": \"{}\" is listed twice", flag, text, item);
+    items.push_back(item);
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
+BenchOptions with_quick_defaults(BenchOptions options) {
+  if (!options.quick) return options;
+  const auto unless_given = [&](const char* flag, auto& value, auto quick_value) {
+    if (!options.given.contains(flag)) value = quick_value;
+  };
+  unless_given("--scene", options.scene, std::string("atrium-simple"));
+  unless_given("--simple-scene", options.simple_scene, std::string("atrium-simple"));
+  unless_given("--backends", options.backends, std::string("cpu"));
+  unless_given("--accels", options.accels, std::string("sah"));
+  unless_given("--updates", options.updates, std::string("refit"));
+  unless_given("--stride", options.stride, 1225);  // frames 0, 1225, 2450, 3675 of the 4900
+  unless_given("--width", options.width, 96);
+  unless_given("--height", options.height, 54);
+  unless_given("--warmup", options.warmup, 1);
+  unless_given("--interval", options.interval, 2);
+  unless_given("--shadow-map-size", options.shadow_map_size, 128);
+  return options;
+}
+
+void add_bench_command(CLI::App& app, BenchOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "bench", "Run the paper's experiment matrix (Figs. 5, 7-10, 12, Tables I-II): CSVs, summary.json, charts, report.md");
+  command->add_option("--experiment", options.experiment, "Experiment to run: paper")->required();
+  command->add_option("--scene", options.scene, "Full scene (Figs. 5, 7, Table I): atrium, sponza or a scene file")
+      ->capture_default_str();
+  command->add_option("--simple-scene", options.simple_scene,
+                      "Simplified scene (Figs. 8, 9, 10, 12, Table II): atrium-simple or a scene file")
+      ->capture_default_str();
+  command->add_option("--backends", options.backends,
+                      "Ray tracing backends, comma-separated: cpu, embree, cuda, optix (unavailable ones are "
+                      "reported as skipped)")
+      ->capture_default_str();
+  command->add_option("--accels", options.accels,
+                      "Structures of the cpu and cuda backends, comma-separated (embree and optix build their own)")
+      ->capture_default_str();
+  command->add_option("--updates", options.updates, "Update policies of the deforming cells: rebuild, refit, auto")
+      ->capture_default_str();
+  command->add_option("--frames", options.frames, "Walkthrough frames considered: 0 .. N-1 (the paper: 4900)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_option("--stride", options.stride, "Measure every K-th of those frames")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(16, 16384))->capture_default_str();
+  command->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(16, 16384))->capture_default_str();
+  command->add_option("--warmup", options.warmup, "Unrecorded frames rendered before each cell's measured ones")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  command->add_option("--interval", options.interval, "Measured frames per interval mean (the paper: 10)")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  command->add_option("--shadow-map-size", options.shadow_map_size, "Shadow cube map face size in texels")
+      ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
+  command->add_flag("--quick", options.quick,
+                    "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple (flags given "
+                    "explicitly still apply)");
+  command->add_flag("--no-plot", options.no_plot, "Do not run tools/plot_bench.py (report.md says how to)");
+  command->add_option("--out", options.out, "Output folder (created if missing; a run in it is resumed)")->required();
+  command->callback([command, &options] {
+    for (const char* flag : {"--scene", "--simple-scene", "--backends", "--accels", "--updates", "--frames", "--stride",
+                             "--width", "--height", "--warmup", "--interval", "--shadow-map-size"})
+      if (command->count(flag) > 0) options.given.insert(flag);
+  });
+}
+
+int run_bench_command(const BenchOptions& given_options) {
+  const BenchOptions options = with_quick_defaults(given_options);
+  check_options(options);
+  std::vector<std::string> known_backends(std::begin(bench::kBenchBackends), std::end(bench::kBenchBackends));
+  std::vector<std::string> known_accels;
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) known_accels.emplace_back(accel::builder_name(builder));
+  const std::vector<std::string> backends = parse_name_list("--backends", options.backends, known_backends);
+  const std::vector<std::string> accels = parse_name_list("--accels", options.accels, known_accels);
+  const std::vector<std::string> updates = parse_name_list("--updates", options.updates, {"rebuild", "refit", "auto"});
+  const fs::path out = options.out;
+  const nlohmann::json settings = run_settings(options);
+  // Before anything is written: a folder holding another run's cells is not mixed with this one.
+  if (fs::is_directory(out)) bench::check_run_settings(out, settings);
+
+  bench::MatrixOptions matrix;
+  matrix.scene = options.scene;
+  matrix.simple_scene = options.simple_scene;
+  matrix.structures = bench::structures_of(backends, accels);
+  matrix.updates = updates;
+  nlohmann::json backend_entries = nlohmann::json::array();
+  for (const std::string& backend : backends) {
+    const std::optional<std::string> reason = bench::backend_unavailable_reason(backend);
+    if (reason) matrix.unavailable_backends[backend] = *reason;
+    backend_entries.push_back(reason ? nlohmann::json{{"name", backend}, {"available", false}, {"reason", *reason}}
+                                     : nlohmann::json{{"name", backend}, {"available", true}});
+  }
+
+  std::map<std::string, Scene> scenes;
+  for (const std::string& name : {options.scene, options.simple_scene})
+    if (!scenes.contains(name)) scenes.emplace(name, load_scene(name));
+  std::vector<PlannedCell> cells;
+  for (Cell& cell : bench::paper_matrix(matrix)) {
+    PlannedCell& planned = cells.emplace_back();
+    planned.cell = std::move(cell);
+    plan_cell(planned, scenes.at(planned.cell.scene), options, out);
+  }
+
+  const OutputFolder folder(out);
+  bench::write_run_settings(out, settings);
+  HeadlessGlContext context;
+  const bench::CellRunSettings cell_settings{options.width, options.height, options.warmup, options.shadow_map_size,
+                                             options.command_line};
+  std::size_t ticks = 0;
+  for (const PlannedCell& planned : cells)
+    if (planned.to_run) ticks += bench::cell_ticks(planned.cell, planned.frames.size(), cell_settings);
+  ProgressBar progress("bench", ticks);
+  for (PlannedCell& planned : cells) {
+    if (!planned.to_run) continue;
+    try {
+      bench::run_cell(planned.cell, scenes.at(planned.cell.scene), planned.frames, cell_settings, context, out, progress);
+      planned.outcome = {CellOutcome::State::done, "", false};
+    } catch (const Error& error) {
+      planned.outcome = {CellOutcome::State::failed, error.what(), false};
+      log_warning("bench: cell {} failed: {}", planned.cell.id, error.what());
+    }
+  }
+  progress.finish();
+
+  nlohmann::json summary_settings = settings;
+  summary_settings["interval_frames"] = options.interval;
+  summary_settings["quick"] = options.quick;
+  nlohmann::json summary = {{"experiment", options.experiment},
+                            {"command", options.command_line},
+                            {"environment", bench::describe_environment(context)},
+                            {"settings", summary_settings},
+                            {"backends", backend_entries},
+                            {"cells", nlohmann::json::array()}};
+  for (const PlannedCell& planned : cells)
+    summary["cells"].push_back(
+        bench::cell_summary(planned.cell, planned.outcome, out, static_cast<std::size_t>(options.interval)));
+  bench::write_summary(out, summary);
+
+  std::string chart_note = options.no_plot ? fmt::format("charts not made (--no-plot); run: python3 {} {}",
+                                                         (out / "plot_bench.py").string(), out.string())
+                                           : bench::plot_bench_charts(out);
+  if (options.no_plot) write_file_atomically(out / "plot_bench.py", bench::kPlotBenchScript);
+  if (!chart_note.empty()) log_warning("{}", chart_note);
+  write_file_atomically(out / "report.md", bench::bench_report_markdown(summary, out, {utc_timestamp(), chart_note}));
+
+  print_final_table(cells, summary);
+  std::size_t failed = 0;
+  for (const PlannedCell& planned : cells) failed += planned.outcome.state == CellOutcome::State::failed ? 1 : 0;
+  if (failed > 0) fail("{} of {} cells failed (reasons in {})", failed, cells.size(), (out / "summary.json").string());
+  return 0;
+}
+
+}  // namespace glint
