@@ -25,8 +25,6 @@ struct GpuBenchStructure::State {
   DeviceBuffer<accel::Ray> rays;
   DeviceBuffer<accel::Hit> hits;
   DeviceBuffer<uint32_t> overflow;
-  const accel::Ray* uploaded_rays = nullptr;  // the host array `rays` holds, to upload each array once
-  std::size_t uploaded_count = 0;
   bool built = false;
 
   ~State() {
@@ -107,11 +105,7 @@ double GpuBenchStructure::trace_closest(std::span<const accel::Ray> rays, std::s
                  " hits");
   if (rays.empty()) return 0.0;
   if (rays.size() > 0xFFFFFFFFu) fail_message("accel-bench cuda: more than 2^32 - 1 rays in one call");
-  if (s.uploaded_rays != rays.data() || s.uploaded_count != rays.size()) {
-    s.rays.upload(rays, s.stream);
-    s.uploaded_rays = rays.data();
-    s.uploaded_count = rays.size();
-  }
+  s.rays.upload(rays, s.stream);
   s.hits.resize(rays.size());
   s.overflow.fill_zero(s.stream);
   const accel::Blas blas{s.bvh.view(), s.mesh.view()};

@@ -8,7 +8,7 @@
 //  - build: GPU builders: triangle boxes + build, the mesh already uploaded; CPU builders: the CPU
 //    build's wall time plus the upload of the BVH.
 //  - refit: triangle boxes + bottom-up refit, the moved vertices already uploaded.
-//  - trace: the closest-hit kernel alone; the rays are uploaded once per distinct ray array.
+//  - trace: the closest-hit kernel alone (the rays' upload and the hits' download excluded).
 // Plain C++ (no CUDA headers); without CUDA or a GPU the constructor throws glint::Error.
 #include "accel/build_options.h"
 #include "accel/builder.h"

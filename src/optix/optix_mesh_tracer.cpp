@@ -82,10 +82,10 @@ double OptixMeshTracer::refit(const accel::TriangleMesh& mesh) {
   return ms_since(start);
 }
 
-void OptixMeshTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+double OptixMeshTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
   State& s = *state_;
   if (!s.built) fail("optix accel-bench: trace before build");
-  s.host_trace.trace(s.pipeline, s.gas.handle(), rays, hits, s.stream.get());
+  return s.host_trace.trace(s.pipeline, s.gas.handle(), rays, hits, s.stream.get());
 }
 
 std::size_t OptixMeshTracer::structure_bytes() const { return state_->gas.structure_bytes(); }

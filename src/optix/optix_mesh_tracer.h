@@ -1,9 +1,10 @@
 #pragma once
 // One OptiX GAS over one triangle mesh with the closest-hit query, for accel-bench's optix rows
 // (src/app/accel_bench/optix_candidates.h): the same single-level setting as glint's own builders
-// there, hits with instance 0 (a GAS traced without an instance). Times are wall clock from the
-// first enqueue to the GPU finishing, synchronous, so they include launch overheads and, for
-// optix-fasttrace, compaction with its host readback of the compacted size.
+// there, hits with instance 0 (a GAS traced without an instance). Build and refit times are wall
+// clock from the first enqueue to the GPU finishing, synchronous, so they include launch overheads
+// and, for optix-fasttrace, compaction with its host readback of the compacted size; the trace time
+// is the launch's GPU time.
 // Plain C++ (no OptiX or CUDA headers); built only with GLINT_HAVE_OPTIX.
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
@@ -29,8 +30,9 @@ public:
   // the GAS in place (OPTIX_BUILD_OPERATION_UPDATE); returns the update's milliseconds. The first
   // refit after a build first rebuilds (untimed) with ALLOW_UPDATE, which the traced build lacks.
   double refit(const accel::TriangleMesh& mesh);
-  // hits[i] = closest hit of rays[i] (instance 0); waits for the GPU.
-  void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits);
+  // hits[i] = closest hit of rays[i] (instance 0); waits for the GPU and returns the launch's GPU
+  // time in ms (the rays' upload and the hits' download excluded, like the cuda rows).
+  double trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits);
   // The GAS's device memory (output buffer, compacted for optix-fasttrace).
   std::size_t structure_bytes() const;
 

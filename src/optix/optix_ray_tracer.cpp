@@ -177,7 +177,7 @@ void OptixRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<a
   State& s = *state_;
   s.require_built("trace_closest()");
   const std::lock_guard lock(s.host_trace_mutex);
-  s.host_trace.trace(s.pipeline, s.ias.handle(), rays, hits, s.stream.get());
+  (void)s.host_trace.trace(s.pipeline, s.ias.handle(), rays, hits, s.stream.get());
 }
 
 rt::RayTracerStats OptixRayTracer::stats() const {

@@ -241,6 +241,20 @@ TEST_F(HybridPipelineTest, CudaBackendGivesTheCpuBackendsImage) {
   }
 }
 
+// Issue 7's bar: the optix backend's frames equal the cuda backend's within PSNR 50 dB (hybrid and
+// rt, refit and rebuild, deformed on the GPU).
+TEST_F(HybridPipelineTest, OptixBackendGivesTheCudaBackendsImage) {
+  if (!GLINT_HAVE_OPTIX) GTEST_SKIP() << "glint was built without OptiX";
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  for (ReflectionMode mode : {ReflectionMode::rt, ReflectionMode::hybrid}) {
+    for (rt::UpdatePolicy policy : {rt::UpdatePolicy::refit, rt::UpdatePolicy::rebuild}) {
+      const ImageRgba8 cuda = deformed_atrium("cuda", policy, true, mode, true, accel::BvhBuilder::lbvh);
+      const ImageRgba8 optix = deformed_atrium("optix", policy, true, mode, true);
+      EXPECT_GE(metrics::rmse_psnr(optix, cuda).psnr, 50.0) << rt::update_policy_name(policy);
+    }
+  }
+}
+
 TEST_F(HybridPipelineTest, TheCudaTracerFollowsTheGpuDeformation) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const ImageRgba8 updated = deformed_atrium("cuda", rt::UpdatePolicy::refit, true, ReflectionMode::rt, true);
