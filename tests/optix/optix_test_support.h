@@ -39,7 +39,8 @@ EdgeFilteredHits without_edge_grazing_rays(std::span<const accel::Ray> rays, std
 // "" when `actual` equals `expected` for `scene` (compare_hits' rules) on every ray except those
 // without_edge_grazing_rays sets aside and those that skim the surface they hit (|cos| < 0.02
 // between the ray and the triangle's normal, where t and u, v are ill-conditioned), and those are at
-// most 0.5 % of the rays; else why not.
+// most 0.5 % of the rays; else why not. On the same triangle at the same t, u and v may differ by up
+// to 1e-2 (OptiX's own barycentric rounding on small triangles).
 std::string compare_hits_off_edges(const Scene& scene, std::span<const accel::Ray> rays,
                                    std::span<const accel::Hit> expected, std::span<const accel::Hit> actual);
 
