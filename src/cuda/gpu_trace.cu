@@ -1,6 +1,7 @@
 #include "cuda/gpu_trace.h"
 
 #include "cuda/cuda_check.h"
+#include "accel/kdtree_traverse.h"
 #include "cuda/gpu_traverse.cuh"
 
 namespace glint::cuda {
@@ -49,6 +50,13 @@ __global__ void __launch_bounds__(kTraceBlock)
   if (overflowed) atomicOr(overflow, 1u);
 }
 
+__global__ void __launch_bounds__(kTraceBlock)
+    trace_closest_kdtree_kernel(accel::KdTreeView tree, accel::TriangleMesh mesh, const accel::Ray* rays,
+                                accel::Hit* hits, uint32_t count) {
+  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
+  if (i < count) hits[i] = accel::trace_closest(tree, mesh, load_ray(rays, i));
+}
+
 __global__ void instance_boxes_kernel(const accel::Instance* instances, uint32_t count, const accel::Blas* blases,
                                       Aabb* boxes) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -85,6 +93,13 @@ void launch_trace_closest(const accel::Blas& blas, const accel::Ray* rays, accel
   if (capacity == 0) return;
   trace_closest_single_kernel<<<blocks(capacity, kTraceBlock), kTraceBlock, 0, stream>>>(blas, rays, hits, ray_count,
                                                                                          capacity, overflow);
+  GLINT_CUDA_CHECK_LAUNCH();
+}
+
+void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMesh& mesh, const accel::Ray* rays,
+                          accel::Hit* hits, uint32_t count, cudaStream_t stream) {
+  if (count == 0) return;
+  trace_closest_kdtree_kernel<<<blocks(count, kTraceBlock), kTraceBlock, 0, stream>>>(tree, mesh, rays, hits, count);
   GLINT_CUDA_CHECK_LAUNCH();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The closest-hit kernel over a ray list in device memory (the CUDA backend's trace), and the
 // instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
+#include "accel/kdtree.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
 
@@ -19,6 +20,11 @@ void launch_trace_closest(const accel::TlasView& tlas, const accel::Ray* rays, a
 // The same over one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
 void launch_trace_closest(const accel::Blas& blas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                           uint32_t capacity, uint32_t* overflow, cudaStream_t stream);
+
+// The same through a kd-tree (accel/kdtree_traverse.h's front-to-back traversal, whose stack the
+// builder's depth limit bounds) over one mesh: Hit.instance is 0.
+void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMesh& mesh, const accel::Ray* rays,
+                          accel::Hit* hits, uint32_t count, cudaStream_t stream);
 
 // boxes[i] = world box of instance i: its BLAS's root box (blases[instances[i].blas].bvh.nodes[0],
 // device memory) transformed by object_to_world; empty for an empty BLAS. Asynchronous on `stream`.

@@ -181,7 +181,7 @@ TEST(AccelBenchRun, AllMeansTheBackendsStructuresPlusEmbree) {
   EXPECT_NE(std::find(cpu.begin(), cpu.end(), "sah-wide8"), cpu.end());
   EXPECT_EQ(std::count_if(cpu.begin(), cpu.end(), [](const std::string& n) { return n.starts_with("cuda-"); }), 0);
   EXPECT_EQ(cuda, (std::vector<std::string>{"cuda-none", "cuda-median", "cuda-sah", "cuda-sbvh", "cuda-lbvh",
-                                            "cuda-trbvh", "cuda-ploc", "embree-low", "embree-medium", "embree-high",
+                                            "cuda-trbvh", "cuda-ploc", "cuda-kdtree", "embree-low", "embree-medium", "embree-high",
                                             "embree-refit"}));
   // Named structures of both kinds mix.
   EXPECT_EQ(parse_structure_list("cuda-lbvh,sah-wide8", "cuda").front(), "cuda-lbvh");
@@ -197,20 +197,20 @@ TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   Scene scene = glint::testing::make_tiny_scene(4);
   BenchOptions options = small_options();
-  options.structures = {"sah", "cuda-lbvh", "cuda-ploc", "cuda-sah", "cuda-sbvh", "embree-medium"};
+  options.structures = {"sah", "cuda-lbvh", "cuda-ploc", "cuda-sah", "cuda-sbvh", "cuda-kdtree", "embree-medium"};
   options.deform_frames = 3;
   const BenchReport report = run_accel_bench(scene, options);
   ASSERT_EQ(report.structures.size(), options.structures.size());
   for (const StructureResult& result : report.structures) {
     EXPECT_TRUE(result.mrays_per_s.has_value()) << result.name;
-    if (result.name.starts_with("cuda-")) {
+    if (result.name.starts_with("cuda-") && result.name != "cuda-kdtree") {
       EXPECT_TRUE(result.sah.has_value()) << result.name;
       EXPECT_TRUE(result.nodes.has_value()) << result.name;
     }
   }
   bool sbvh_seen = false;
   for (const DeformResult& deform : report.deform) {
-    if (deform.name == "cuda-sbvh") {
+    if (deform.name == "cuda-sbvh" || deform.name == "cuda-kdtree") {
       sbvh_seen = true;
       EXPECT_FALSE(deform.refit_ms.has_value());
     }
@@ -219,6 +219,10 @@ TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
     }
   }
   EXPECT_TRUE(sbvh_seen);
+  const auto kdtree = std::find_if(report.structures.begin(), report.structures.end(),
+                                   [](const StructureResult& r) { return r.name == "cuda-kdtree"; });
+  ASSERT_NE(kdtree, report.structures.end());
+  EXPECT_TRUE(kdtree->nodes.has_value());
 }
 
 TEST(AccelBenchRun, JsonHasTheMachineAndOneRowPerStructure) {

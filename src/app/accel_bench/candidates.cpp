@@ -14,6 +14,7 @@
 #include "accel/wide_bvh_trace.h"
 #include "app/accel_bench/optix_candidates.h"
 #include "core/error.h"
+#include "cuda/gpu_bench_kdtree.h"
 #include "cuda/gpu_bench_structure.h"
 
 #include <chrono>
@@ -204,6 +205,34 @@ Candidate cuda_candidate(accel::BvhBuilder builder) {
   return candidate;
 }
 
+// The kd-tree built on the CPU and traced on the GPU (cuda/gpu_bench_kdtree.h); not refittable, and
+// its SAH (over cells) is left out like the CPU kd-tree's.
+Candidate cuda_kdtree_candidate() {
+  auto tree = std::make_shared<std::optional<cuda::GpuBenchKdTree>>();
+  Candidate candidate;
+  candidate.name = "cuda-kdtree";
+  candidate.build = [tree](const accel::TriangleMesh& mesh) {
+    if (!*tree) tree->emplace();
+    return (*tree)->build(mesh);
+  };
+  candidate.refit = [](const accel::TriangleMesh&) -> std::optional<double> { return std::nullopt; };
+  candidate.trace_closest_timed = [tree](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
+    if (!*tree) fail("accel-bench: trace before build");
+    return (*tree)->trace_closest(rays, hits) * 1e-3;
+  };
+  candidate.trace_closest = [timed = candidate.trace_closest_timed](std::span<const accel::Ray> rays,
+                                                                    std::span<accel::Hit> hits) { timed(rays, hits); };
+  candidate.stats = [tree] {
+    CandidateStats stats;
+    if (!*tree) return stats;
+    const accel::KdTreeStats kd = accel::compute_stats((*tree)->tree());
+    stats.nodes = kd.nodes;
+    stats.memory_bytes = kd.memory_bytes;
+    return stats;
+  };
+  return candidate;
+}
+
 }  // namespace
 
 std::string wide_candidate_name(accel::BvhBuilder builder, int width) {
@@ -226,6 +255,7 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
     menu.push_back({embree_name(quality), [&device, quality] { return embree_candidate(device, quality); }});
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({cuda_name(builder), [builder] { return cuda_candidate(builder); }});
+  menu.push_back({"cuda-kdtree", [] { return cuda_kdtree_candidate(); }});
   for (CandidateEntry& entry : optix_candidate_menu()) menu.push_back(std::move(entry));
   return menu;
 }
@@ -253,6 +283,7 @@ std::vector<std::string> candidate_names() {
 std::vector<std::string> cuda_candidate_names() {
   std::vector<std::string> names;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) names.push_back(cuda_name(builder));
+  names.emplace_back("cuda-kdtree");
   return names;
 }
 

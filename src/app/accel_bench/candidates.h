@@ -49,8 +49,8 @@ struct CandidateEntry {
 
 // Every known structure: each accel::kAllBvhBuilders builder by its builder_name, "kdtree", the wide
 // BVHs, "embree-low", "embree-medium", "embree-high", "embree-refit", then the GPU structures
-// "cuda-<builder>" for every builder (cuda/gpu_bench_structure.h; making one fails with one clear
-// line without CUDA or a GPU), then "optix-fasttrace" and "optix-fastbuild" (optix_candidates.h).
+// "cuda-<builder>" for every builder (cuda/gpu_bench_structure.h) and "cuda-kdtree"
+// (cuda/gpu_bench_kdtree.h; making one fails with one clear line without CUDA or a GPU), then "optix-fasttrace" and "optix-fastbuild" (optix_candidates.h).
 // `device` must outlive the candidates.
 std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
 
@@ -61,7 +61,8 @@ inline constexpr accel::BvhBuilder kWideSources[] = {accel::BvhBuilder::sah, acc
 std::string wide_candidate_name(accel::BvhBuilder builder, int width);
 
 std::vector<std::string> candidate_names();
-// "cuda-<builder>" for every accel::kAllBvhBuilders builder: what `--backend cuda --builders all` runs.
+// "cuda-<builder>" for every accel::kAllBvhBuilders builder, then "cuda-kdtree": what
+// `--backend cuda --builders all` runs.
 std::vector<std::string> cuda_candidate_names();
 std::vector<std::string> embree_candidate_names();
 
