@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <utility>
 
 namespace glint::accel {
 namespace detail {
@@ -61,7 +62,7 @@ void build_interior(BinaryTree& tree, const CommonPrefix& delta, int64_t i) {
 
 }  // namespace
 
-BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order) {
+BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order, bool fit_boxes) {
   BinaryTree tree = make_leaves(input, order.prims);
   const uint32_t count = tree.leaf_count;
   if (count < 2) return tree;
@@ -70,7 +71,7 @@ BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order) 
   tbb::parallel_for(tbb::blocked_range<int64_t>(0, int64_t{count} - 1, 1024), [&](const tbb::blocked_range<int64_t>& r) {
     for (int64_t i = r.begin(); i != r.end(); ++i) build_interior(tree, delta, i);
   });
-  fit_interior_boxes(tree);
+  if (fit_boxes) fit_interior_boxes(tree);
   return tree;
 }
 
@@ -83,8 +84,9 @@ BinaryTree build_lbvh_tree(const BuildInput& input) {
 Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "lbvh");
-  detail::BinaryTree tree = detail::build_lbvh_tree(input);
-  Bvh bvh = detail::flatten_tree(tree, options, "lbvh");
+  detail::BinaryTree tree = detail::build_karras_tree(input, sort_by_morton(input.centroids), false);
+  detail::ParallelArray<detail::SubtreeSummary> summaries = detail::fit_and_summarise_tree(tree, options);
+  Bvh bvh = detail::flatten_tree(tree, std::move(summaries), options, "lbvh");
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

@@ -96,10 +96,10 @@ TEST(KarrasTree, InOrderLeavesFollowTheSortedCodesEvenWithDuplicates) {
       // A radix tree over sorted keys lists its leaves in key order.
       EXPECT_EQ(checked_leaf_order(tree), iota_vector(count)) << count << " leaves, " << distinct << " codes";
       if (distinct == 1) {  // all codes equal: the index tie-break gives a balanced tree
-        const std::vector<detail::SubtreeSummary> summaries = detail::summarise_tree(tree, BuildOptions{});
+        const auto summaries = detail::summarise_tree(tree, BuildOptions{});
         BuildOptions single;
         single.max_leaf_size = 1;
-        const std::vector<detail::SubtreeSummary> no_collapse = detail::summarise_tree(tree, single);
+        const auto no_collapse = detail::summarise_tree(tree, single);
         EXPECT_EQ(no_collapse[tree.root].height, 1u + static_cast<uint32_t>(std::bit_width(count - 1)));
       }
     }

@@ -1,0 +1,74 @@
+#pragma once
+// Internal to build_sah: binned SAH split finding (Wald 2007). A range's centroids are binned into
+// bin_count slabs per axis; every bin keeps the box and count of what fell in it; a sweep over the
+// bin boundaries of each axis finds the cheapest split. Large ranges are binned in parallel: chunks
+// fill their own bins, which are merged. Merging takes minima, maxima and sums, which are exact, so
+// parallel binning gives exactly the bins serial binning gives, whatever the number of threads.
+#include "accel/prim_ref.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace glint::accel::detail {
+
+inline constexpr uint32_t kMaxSahBins = 256;
+
+// Maps a centroid coordinate to its bin; the same function serves binning and partitioning, so both
+// always agree on which side a primitive falls.
+struct BinMapping {
+  vec3 origin{0.0f};
+  vec3 scale{0.0f};  // bins per unit length; 0 on an axis whose centroids all coincide
+  uint32_t bin_count = 0;
+
+  uint32_t bin(const vec3& centroid, int axis) const {
+    const float position = (centroid[axis] - origin[axis]) * scale[axis];
+    // Clamped in float before the conversion (converting an out-of-range float is undefined); the
+    // largest centroid lands exactly on bin_count and belongs to the last bin.
+    if (!(position > 0.0f)) return 0;
+    return position < static_cast<float>(bin_count - 1) ? static_cast<uint32_t>(position) : bin_count - 1;
+  }
+};
+
+// The mapping over a range's centroid bounds, or nullopt when all centroids coincide (no axis to
+// split along). bin_count in [2, kMaxSahBins].
+std::optional<BinMapping> bin_mapping(const Aabb& centroid_box, uint32_t bin_count);
+
+struct SahBin {
+  vec3 box_min;
+  uint32_t count;
+  vec3 box_max;
+};
+
+// Fixed capacity, so binning a node allocates nothing; only the first 3 * bin_count entries are
+// initialised (clear) and used.
+struct SahBins {
+  uint32_t bin_count = 0;
+  std::array<SahBin, 3 * kMaxSahBins> bins;
+
+  void clear(uint32_t count);
+  SahBin& at(int axis, uint32_t b) { return bins[static_cast<uint32_t>(axis) * bin_count + b]; }
+  const SahBin& at(int axis, uint32_t b) const { return bins[static_cast<uint32_t>(axis) * bin_count + b]; }
+  void add(const SahBins& other);  // bin-wise union of boxes, sum of counts
+  // Same bin count, and every used bin has the same count and (when not empty) the same box.
+  bool operator==(const SahBins& other) const;
+};
+
+// Bins refs[range.begin, range.end) along all three axes into `bins` (cleared first). With
+// `parallel`, chunks of `chunk` references are binned by TBB tasks and merged.
+void bin_refs(std::span<const PrimRef> refs, const PrimRange& range, const BinMapping& mapping, bool parallel,
+              uint32_t chunk, SahBins& bins);
+
+// The cheapest boundary: bins [0, boundary) of `axis` go left. cost = A_left N_left + A_right N_right
+// with A the half surface area (not yet divided by the node's area).
+struct SahSplit {
+  int axis = -1;
+  uint32_t boundary = 0;
+  float cost = 0.0f;
+};
+
+// nullopt when no boundary of a non-flat axis has primitives on both sides.
+std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& mapping, uint32_t count);
+
+}  // namespace glint::accel::detail
