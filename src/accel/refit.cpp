@@ -1,50 +1,101 @@
 #include "accel/refit.h"
 
-#include "accel/refit_tasks.h"
 #include "core/error.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
 #include <atomic>
+#include <vector>
 
 namespace glint::accel {
 namespace {
 
-// One depth-first pass: a leaf's box from its primitives, an interior node's from its children's,
-// written on the way back up. Subtrees near the root run as parallel tasks (refit_tasks.h); below
-// that a subtree is one task's sequential walk, which follows the builders' depth-first node order
-// through memory.
+// Every builder lays nodes out depth-first with sibling pairs (a node's two children, then the left
+// child's descendants, then the right child's), so a subtree's descendants are one contiguous range
+// of the array. The refit cuts the tree into such subtrees near the root, sweeps each one's range in
+// reverse (children before parents, in memory order) as a parallel task, then finishes the few
+// nodes above the cut serially. A tree in another order (children after parents is all refit
+// promises its callers) gets one serial reverse sweep instead.
+struct Subtree {
+  uint32_t root;
+  uint32_t begin, end;  // the root's descendants: nodes[begin, end)
+};
+
+// Splits the tree into subtrees of at most `limit` descendants and the nodes above them (`top`, in
+// breadth-first order, parents before children). False when the layout is not the depth-first one.
+bool cut_tree(std::span<const BvhNode> nodes, size_t limit, std::vector<uint32_t>& top, std::vector<Subtree>& subtrees) {
+  std::vector<Subtree> queue{{0, 1, static_cast<uint32_t>(nodes.size())}};
+  for (size_t next = 0; next < queue.size(); ++next) {
+    const Subtree subtree = queue[next];
+    const BvhNode& node = nodes[subtree.root];
+    if (node.is_leaf() || subtree.end - subtree.begin <= limit) {
+      if (node.is_leaf() && subtree.begin != subtree.end) return false;
+      subtrees.push_back(subtree);
+      continue;
+    }
+    const uint32_t left = node.left(), right = node.right();
+    if (left != subtree.begin || right + 1 > subtree.end) return false;
+    const uint32_t right_begin = nodes[right].is_leaf() ? subtree.end : nodes[right].first;
+    if (right_begin < right + 1 || right_begin > subtree.end) return false;
+    top.push_back(subtree.root);
+    queue.push_back({left, right + 1, right_begin});
+    queue.push_back({right, right_begin, subtree.end});
+  }
+  return true;
+}
+
 template <typename LeafBox>
 struct Refitter {
   std::span<BvhNode> nodes;
-  std::span<const uint32_t> prim_indices;
-  LeafBox leaf_box;  // (first slot, count) -> box of prim_indices[first, first + count)
-  uint32_t task_levels;
+  const LeafBox& leaf_box;  // (first slot, count) -> box of those primitives
 
-  Aabb refit(uint32_t index, uint32_t level) const {
-    BvhNode& node = nodes[index];
-    Aabb box;
+  void refit_node(uint32_t i) const {
+    BvhNode& node = nodes[i];
     if (node.is_leaf()) {
-      box = leaf_box(node.first, node.prim_count);
-    } else {
-      if (node.left() <= index || node.right() >= nodes.size())
-        fail("accel: refit: node {} has children at {}, not after it; refit needs children after parents", index,
-             node.left());
-      if (level >= kMaxBvhDepth) fail("accel: refit: the BVH is deeper than {} levels", kMaxBvhDepth);
-      const auto [left, right] = detail::in_parallel_if(
-          level < task_levels, [&] { return refit(node.left(), level + 1); },
-          [&] { return refit(node.right(), level + 1); });
-      box = left;
-      box.extend(right);
+      node.set_bounds(leaf_box(node.first, node.prim_count));
+      return;
     }
+    Aabb box = nodes[node.left()].bounds();
+    box.extend(nodes[node.right()].bounds());
     node.set_bounds(box);
-    return box;
+  }
+
+  // Reverse sweep over nodes[begin, end); false (nothing reliable written) when a child is not after
+  // its parent inside the range.
+  bool sweep(uint32_t begin, uint32_t end) const {
+    for (uint32_t i = end; i-- > begin;) {
+      const BvhNode& node = nodes[i];
+      if (!node.is_leaf() && (node.left() <= i || node.right() >= end)) return false;
+      refit_node(i);
+    }
+    return true;
   }
 };
 
 template <typename LeafBox>
-void refit_nodes(Bvh& bvh, LeafBox leaf_box) {
-  if (bvh.nodes.empty()) return;
-  const Refitter<LeafBox> refitter{bvh.nodes, bvh.prim_indices, leaf_box, detail::refit_task_levels(bvh.nodes.size(), 2)};
-  refitter.refit(0, 1);
+void refit_nodes(Bvh& bvh, const LeafBox& leaf_box) {
+  const auto count = static_cast<uint32_t>(bvh.nodes.size());
+  if (count == 0) return;
+  const Refitter<LeafBox> refitter{bvh.nodes, leaf_box};
+  // Several subtrees per thread, so that stealing evens out their sizes; none below 1024 nodes.
+  const size_t limit = std::max<size_t>(1024, count / (8 * static_cast<size_t>(tbb::this_task_arena::max_concurrency())));
+  std::vector<uint32_t> top;
+  std::vector<Subtree> subtrees;
+  std::atomic<bool> in_order{cut_tree(bvh.nodes, limit, top, subtrees)};
+  if (in_order.load()) {
+    tbb::parallel_for(size_t{0}, subtrees.size(), [&](size_t s) {
+      if (!refitter.sweep(subtrees[s].begin, subtrees[s].end)) in_order.store(false, std::memory_order_relaxed);
+      else refitter.refit_node(subtrees[s].root);
+    });
+  }
+  if (!in_order.load()) {
+    if (!refitter.sweep(0, count))
+      fail("accel: refit: a node has children before it or past the end; refit needs children after parents");
+    return;
+  }
+  for (size_t i = top.size(); i-- > 0;) refitter.refit_node(top[i]);
 }
 
 void check_refittable(const Bvh& bvh, size_t prim_count) {

@@ -1,19 +1,29 @@
 #include "accel/wide_bvh_refit.h"
 
-#include "accel/refit_tasks.h"
 #include "accel/wide_bvh_collapse.h"
 #include "core/error.h"
 
 #include <tbb/task_group.h>
 
 #include <array>
+#include <bit>
 
 namespace glint::accel {
 namespace {
 
+// Levels whose nodes fork their lanes as tasks: about one task per 1024 lanes below the forks (more
+// tasks than cores even on a few thousand nodes, so stealing evens out unbalanced trees), none for a
+// small tree.
+template <int N>
+uint32_t task_levels(size_t nodes) {
+  constexpr auto fork_bits = static_cast<uint32_t>(std::bit_width(static_cast<unsigned>(N)) - 1);  // log2(N)
+  const auto bits = static_cast<uint32_t>(std::bit_width(nodes * N / 1024));
+  return (bits + fork_bits - 1) / fork_bits;
+}
+
 // One depth-first pass over the wide tree: a leaf lane re-gathers its triangle blocks from the mesh
 // and bounds them, an interior lane takes its child node's box, written on the way back up. Nodes
-// near the root fork their interior lanes as parallel tasks (refit_tasks.h).
+// near the root fork their lanes as parallel tasks.
 template <int N>
 struct WideRefitter {
   WideBvh<N>& bvh;
@@ -77,7 +87,7 @@ void refit_wide(WideBvh<N>& bvh, const TriangleMesh& mesh) {
     bvh.bounds = Aabb{};
     return;
   }
-  const WideRefitter<N> refitter{bvh, mesh, detail::refit_task_levels(bvh.nodes.size(), N)};
+  const WideRefitter<N> refitter{bvh, mesh, task_levels<N>(bvh.nodes.size())};
   bvh.bounds = refitter.refit(0, 1);
 }
 
