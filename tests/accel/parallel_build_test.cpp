@@ -13,6 +13,7 @@
 #include "accel/sah_binning.h"
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
+#include "core/error.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -295,6 +296,49 @@ TEST(ParallelRefit, BinaryBoxesEqualASerialBottomUpRecomputation) {
     }
     EXPECT_EQ(0, std::memcmp(from_mesh.nodes.data(), from_boxes.nodes.data(), from_mesh.nodes.size() * sizeof(BvhNode)));
   }
+}
+
+// The same tree with its nodes in breadth-first order: children still after parents (all refit
+// asks of a caller's BVH), but a subtree's descendants no longer contiguous. to_bfs[old] = new index.
+Bvh breadth_first(const Bvh& bvh, std::vector<uint32_t>& to_bfs) {
+  Bvh bfs = bvh;
+  to_bfs.assign(bvh.nodes.size(), 0);
+  std::vector<uint32_t> order{0};  // old indices in breadth-first order
+  for (size_t next = 0; next < order.size(); ++next) {
+    const BvhNode& node = bvh.nodes[order[next]];
+    to_bfs[order[next]] = static_cast<uint32_t>(next);
+    if (node.is_leaf()) continue;
+    order.push_back(node.left());
+    order.push_back(node.right());
+  }
+  for (size_t i = 0; i < order.size(); ++i) {
+    BvhNode node = bvh.nodes[order[i]];
+    if (!node.is_leaf()) node.first = to_bfs[node.left()];
+    bfs.nodes[i] = node;
+  }
+  return bfs;
+}
+
+TEST(ParallelRefit, AnotherNodeOrderIsRefittedByOneSweepAndABrokenOneIsAClearError) {
+  testing::TestMesh mesh = testing::make_clustered(14, 30000);
+  Bvh bvh = build_bvh(BvhBuilder::sah, mesh.view());
+  std::vector<uint32_t> to_bfs;
+  Bvh bfs = breadth_first(bvh, to_bfs);
+  ASSERT_NE(0, std::memcmp(bfs.nodes.data(), bvh.nodes.data(), bvh.nodes.size() * sizeof(BvhNode)));
+  deform(mesh, 0.05f);
+  refit(bvh, mesh.view());
+  refit(bfs, mesh.view());
+  for (size_t i = 0; i < bvh.nodes.size(); ++i) {
+    ASSERT_EQ(bfs.nodes[to_bfs[i]].bounds_min, bvh.nodes[i].bounds_min) << "node " << i;
+    ASSERT_EQ(bfs.nodes[to_bfs[i]].bounds_max, bvh.nodes[i].bounds_max) << "node " << i;
+  }
+  // A child before its parent (here: the last interior node points back at the root's pair).
+  for (size_t i = bfs.nodes.size(); i-- > 0;) {
+    if (bfs.nodes[i].is_leaf()) continue;
+    bfs.nodes[i].first = 1;
+    break;
+  }
+  EXPECT_THROW(refit(bfs, mesh.view()), Error);
 }
 
 TEST(ParallelRefit, WideBoxesAndBlocksEqualASerialRecomputation) {
