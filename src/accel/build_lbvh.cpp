@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <span>
 #include <utility>
 
 namespace glint::accel {
@@ -17,7 +18,7 @@ namespace {
 // Karras's delta(i, j): the length of the common prefix of keys i and j, where a key is the Morton
 // code followed by the 32-bit position (so equal codes still differ); -1 outside [0, count).
 struct CommonPrefix {
-  const std::vector<uint64_t>& codes;
+  std::span<const uint64_t> codes;
   int64_t count;
 
   int operator()(int64_t i, int64_t j) const {

@@ -26,7 +26,7 @@ uint32_t digit_of(uint64_t key, uint32_t shift) { return static_cast<uint32_t>(k
 
 }  // namespace
 
-void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values, uint32_t key_bits) {
+void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t key_bits) {
   if (keys.size() != values.size())
     fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
   if (key_bits < 1 || key_bits > 64) fail("accel: radix_sort_pairs: key_bits must be in [1, 64], got {}", key_bits);

@@ -86,9 +86,12 @@ TEST(KarrasTree, InOrderLeavesFollowTheSortedCodesEvenWithDuplicates) {
     for (const uint64_t distinct : {uint64_t{1}, uint64_t{5}, uint64_t{1} << 40}) {
       MortonOrder order;
       order.bits = 63;
-      for (uint32_t i = 0; i < count; ++i) order.codes.push_back(rng() % distinct);
+      order.codes = detail::ParallelArray<uint64_t>(count);
+      for (uint32_t i = 0; i < count; ++i) order.codes[i] = rng() % distinct;
       std::sort(order.codes.begin(), order.codes.end());
-      order.prims = iota_vector(count);
+      order.prims = detail::ParallelArray<uint32_t>(count);
+      const std::vector<uint32_t> identity = iota_vector(count);
+      std::copy(identity.begin(), identity.end(), order.prims.begin());
       const PrimitiveBounds bounds = unit_boxes_along_x(count);
       const BinaryTree tree = detail::build_karras_tree(bounds.input(), order);
       ASSERT_EQ(tree.nodes.size(), 2 * size_t{count} - 1);
