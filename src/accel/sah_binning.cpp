@@ -29,18 +29,24 @@ void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, con
 }
 
 // tbb::parallel_reduce body: a body is split off only when a thread steals work, so bins are
-// cleared and merged once per stolen range, not once per chunk.
+// cleared and merged once per stolen range, not once per chunk. The first body bins straight into
+// the caller's bins (no 21 KB copy at the end); split-off bodies bin into their own.
 struct BinReduction {
   std::span<const PrimRef> refs;
   const BinMapping& mapping;
-  SahBins bins;
+  SahBins own;
+  SahBins* bins;
 
-  BinReduction(std::span<const PrimRef> r, const BinMapping& m) : refs(r), mapping(m) { bins.clear(m.bin_count); }
-  BinReduction(BinReduction& other, tbb::split) : refs(other.refs), mapping(other.mapping) {
-    bins.clear(mapping.bin_count);
+  BinReduction(std::span<const PrimRef> r, const BinMapping& m, SahBins& out) : refs(r), mapping(m), bins(&out) {
+    bins->clear(m.bin_count);
   }
-  void operator()(const tbb::blocked_range<uint32_t>& r) { bin_serial(refs, r.begin(), r.end(), mapping, bins); }
-  void join(const BinReduction& other) { bins.add(other.bins); }
+  BinReduction(BinReduction& other, tbb::split) : refs(other.refs), mapping(other.mapping), bins(&own) {
+    own.clear(mapping.bin_count);
+  }
+  BinReduction(const BinReduction&) = delete;
+  BinReduction& operator=(const BinReduction&) = delete;
+  void operator()(const tbb::blocked_range<uint32_t>& r) { bin_serial(refs, r.begin(), r.end(), mapping, *bins); }
+  void join(const BinReduction& other) { bins->add(*other.bins); }
 };
 
 }  // namespace
@@ -87,9 +93,8 @@ void bin_refs(std::span<const PrimRef> refs, const PrimRange& range, const BinMa
     bin_serial(refs, range.begin, range.end, mapping, bins);
     return;
   }
-  BinReduction reduction(refs, mapping);
+  BinReduction reduction(refs, mapping, bins);
   tbb::parallel_reduce(tbb::blocked_range<uint32_t>(range.begin, range.end, chunk), reduction);
-  bins = reduction.bins;
 }
 
 std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& mapping, uint32_t count) {
