@@ -1,5 +1,7 @@
 #include "accel/refit.h"
 
+#include "accel/parallel_array.h"
+#include "accel/primitive_bounds.h"
 #include "core/error.h"
 
 #include <tbb/parallel_for.h>
@@ -118,22 +120,12 @@ void refit(Bvh& bvh, std::span<const Aabb> prim_boxes) {
 
 void refit(Bvh& bvh, const TriangleMesh& mesh) {
   check_refittable(bvh, mesh.triangle_count);
-  // The triangles are read straight into the leaf boxes: no array of primitive boxes in between.
-  std::atomic<bool> finite{true};
-  refit_nodes(bvh, [&](uint32_t first, uint32_t count) {
-    Aabb box;
-    bool leaf_finite = true;
-    for (uint32_t slot = first; slot != first + count; ++slot) {
-      const Triangle tri = mesh.triangle(bvh.prim_indices[slot]);
-      leaf_finite = leaf_finite && is_finite(tri.v0) && is_finite(tri.v1) && is_finite(tri.v2);
-      box.extend(tri.v0);
-      box.extend(tri.v1);
-      box.extend(tri.v2);
-    }
-    if (!leaf_finite) finite.store(false, std::memory_order_relaxed);
-    return box;
-  });
-  if (!finite.load()) fail("accel: a triangle has a vertex that is not finite (NaN or infinity)");
+  // Triangle boxes first, in triangle order (sequential reads of the index buffer, in parallel),
+  // then the sweeps read one box per primitive: faster than gathering each leaf's triangles through
+  // the index buffer in leaf order, measured with the deforming dinosaurs.
+  detail::ParallelArray<Aabb> boxes(mesh.triangle_count);
+  triangle_boxes(mesh, boxes);
+  refit(bvh, boxes);
 }
 
 }  // namespace glint::accel
