@@ -165,30 +165,27 @@ WideBvh<N> collapse_to_wide(const Bvh& bvh, const TriangleMesh& mesh, const Wide
 }
 
 template <int N>
-void gather_wide_block(WideBvh<N>& wide, size_t index, const TriangleMesh& mesh) {
-  TriangleBlock<N>& block = wide.blocks[index];
-  Triangle tri{};
-  for (int lane = 0; lane < N; ++lane) {
-    // Padding lanes (after the real ones) repeat the last triangle: finite values, masked off.
-    if (block.prim[lane] != Hit::kInvalidIndex) {
-      if (block.prim[lane] >= mesh.triangle_count)
-        fail("accel: wide BVH block {} references triangle {} of {}", index, block.prim[lane], mesh.triangle_count);
-      tri = mesh.triangle(block.prim[lane]);
-    }
-    for (int axis = 0; axis < 3; ++axis) {
-      block.v[0][axis][lane] = tri.v0[axis];
-      block.v[1][axis][lane] = tri.v1[axis];
-      block.v[2][axis][lane] = tri.v2[axis];
-    }
-  }
-}
-
-template <int N>
 void gather_wide_triangles(WideBvh<N>& wide, const TriangleMesh& mesh) {
   if (wide.prim_count != mesh.triangle_count)
     fail("accel: wide BVH over {} triangles given a mesh of {}", wide.prim_count, mesh.triangle_count);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, wide.blocks.size(), 1024), [&](const auto& range) {
-    for (size_t b = range.begin(); b != range.end(); ++b) gather_wide_block(wide, b, mesh);
+    for (size_t b = range.begin(); b != range.end(); ++b) {
+      TriangleBlock<N>& block = wide.blocks[b];
+      Triangle tri{};
+      for (int lane = 0; lane < N; ++lane) {
+        // Padding lanes (after the real ones) repeat the last triangle: finite values, masked off.
+        if (block.prim[lane] != Hit::kInvalidIndex) {
+          if (block.prim[lane] >= mesh.triangle_count)
+            fail("accel: wide BVH block {} references triangle {} of {}", b, block.prim[lane], mesh.triangle_count);
+          tri = mesh.triangle(block.prim[lane]);
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+          block.v[0][axis][lane] = tri.v0[axis];
+          block.v[1][axis][lane] = tri.v1[axis];
+          block.v[2][axis][lane] = tri.v2[axis];
+        }
+      }
+    }
   });
 }
 
@@ -196,7 +193,5 @@ template WideBvh<4> collapse_to_wide<4>(const Bvh&, const TriangleMesh&, const W
 template WideBvh<8> collapse_to_wide<8>(const Bvh&, const TriangleMesh&, const WideCollapseOptions&);
 template void gather_wide_triangles<4>(WideBvh<4>&, const TriangleMesh&);
 template void gather_wide_triangles<8>(WideBvh<8>&, const TriangleMesh&);
-template void gather_wide_block<4>(WideBvh<4>&, size_t, const TriangleMesh&);
-template void gather_wide_block<8>(WideBvh<8>&, size_t, const TriangleMesh&);
 
 }  // namespace glint::accel

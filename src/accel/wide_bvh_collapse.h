@@ -30,15 +30,9 @@ WideBvh<N> collapse_to_wide(const Bvh& bvh, const TriangleMesh& mesh, const Wide
 template <int N>
 void gather_wide_triangles(WideBvh<N>& wide, const TriangleMesh& mesh);
 
-// The same for one block (wide.blocks[index]), for callers that visit the blocks themselves.
-template <int N>
-void gather_wide_block(WideBvh<N>& wide, size_t index, const TriangleMesh& mesh);
-
 extern template WideBvh<4> collapse_to_wide<4>(const Bvh&, const TriangleMesh&, const WideCollapseOptions&);
 extern template WideBvh<8> collapse_to_wide<8>(const Bvh&, const TriangleMesh&, const WideCollapseOptions&);
 extern template void gather_wide_triangles<4>(WideBvh<4>&, const TriangleMesh&);
 extern template void gather_wide_triangles<8>(WideBvh<8>&, const TriangleMesh&);
-extern template void gather_wide_block<4>(WideBvh<4>&, size_t, const TriangleMesh&);
-extern template void gather_wide_block<8>(WideBvh<8>&, size_t, const TriangleMesh&);
 
 }  // namespace glint::accel
