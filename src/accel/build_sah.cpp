@@ -13,10 +13,15 @@ std::optional<detail::Split> sah_policy(const detail::SplitContext& context, con
   const std::optional<detail::BinMapping> mapping = detail::bin_mapping(range.centroid_box, options.bins);
   if (!mapping) return std::nullopt;  // all centroids coincide: no SAH split exists
 
-  // Per call, not per thread: 21 KB of bins on the stack, of which only 3 * bins are touched.
-  detail::SahBins bins;
-  detail::bin_refs(context.refs, range, *mapping, context.parallel, context.chunk, bins);
-  const std::optional<detail::SahSplit> best = detail::best_sah_split(bins, *mapping, range.size());
+  std::optional<detail::SahSplit> best;
+  if (range.size() <= detail::kSmallSahRange) {
+    best = detail::best_sah_split_small(context.refs, range, *mapping);
+  } else {
+    // Per call, not per thread: 21 KB of bins on the stack, of which only 3 * bins are touched.
+    detail::SahBins bins;
+    detail::bin_refs(context.refs, range, *mapping, context.parallel, context.chunk, bins);
+    best = detail::best_sah_split(bins, *mapping, range.size());
+  }
   if (!best) return std::nullopt;
 
   const float node_area = half_area(range.box);

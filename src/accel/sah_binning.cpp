@@ -140,4 +140,41 @@ std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& ma
   return best;
 }
 
+std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, const PrimRange& range,
+                                             const BinMapping& mapping) {
+  const uint32_t count = range.size();
+  std::array<uint32_t, kSmallSahRange> bin_of;      // bin of references[i] on the current axis
+  std::array<uint32_t, kSmallSahRange> order;       // reference indices sorted by bin
+  std::array<float, kSmallSahRange> right_cost_at;  // cost of order[i..] when order[i] starts a bin
+  std::optional<SahSplit> best;
+  float best_cost = std::numeric_limits<float>::infinity();
+  const PrimRef* first = refs.data() + range.begin;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (mapping.scale[axis] == 0.0f) continue;
+    for (uint32_t i = 0; i < count; ++i) {
+      bin_of[i] = mapping.bin(first[i].centroid, axis);
+      order[i] = i;
+      for (uint32_t j = i; j > 0 && bin_of[order[j - 1]] > bin_of[order[j]]; --j) std::swap(order[j - 1], order[j]);
+    }
+    Aabb right;
+    for (uint32_t i = count; i-- > 0;) {
+      right.extend(first[order[i]].box());
+      if (i == 0 || bin_of[order[i - 1]] != bin_of[order[i]])
+        right_cost_at[i] = half_area(right) * static_cast<float>(count - i);
+    }
+    Aabb left;
+    for (uint32_t i = 0; i + 1 < count; ++i) {
+      left.extend(first[order[i]].box());
+      const uint32_t bin = bin_of[order[i]];
+      if (bin == bin_of[order[i + 1]]) continue;  // not the last reference of its bin
+      const float cost = half_area(left) * static_cast<float>(i + 1) + right_cost_at[i + 1];
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = SahSplit{axis, bin + 1, cost};
+      }
+    }
+  }
+  return best;
+}
+
 }  // namespace glint::accel::detail

@@ -71,4 +71,15 @@ struct SahSplit {
 // nullopt when no boundary of a non-flat axis has primitives on both sides.
 std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& mapping, uint32_t count);
 
+// Ranges of at most this many references are the majority of nodes; for them clearing, filling and
+// sweeping 3 x bin_count bins costs more than looking at the references themselves.
+inline constexpr uint32_t kSmallSahRange = 8;
+
+// The same split as binning refs[range] and best_sah_split, found without bins (range.size() <=
+// kSmallSahRange): per axis, the references sorted by bin index, each group of equal bins taking the
+// place of its bin. Both sides' boxes are the same unions of the same boxes and the costs the same
+// expressions, so axis, boundary and cost are bit for bit those of best_sah_split.
+std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, const PrimRange& range,
+                                             const BinMapping& mapping);
+
 }  // namespace glint::accel::detail

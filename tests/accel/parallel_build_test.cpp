@@ -83,15 +83,16 @@ TEST(SahBinning, ParallelBinningEqualsSerialBinningExactly) {
 }
 
 TEST(SahBinning, SweepFindsTheCheapestBoundaryOfABruteForceSearch) {
-  // The sweep skips empty bins; a search over every boundary, each side's box merged from scratch in
-  // the same order, must pick the same axis and boundary at the same cost, ties to the first.
+  // The sweep skips empty bins, and small ranges are searched without bins; a search over every
+  // boundary, each side's box merged from scratch in the same order, must pick the same axis and
+  // boundary at the same cost, ties to the first.
   const testing::TestMesh scene = testing::make_clustered(6, 20000);
   const PrimitiveBounds bounds = triangle_bounds(scene.view());
   PrimRange root;
   const std::vector<PrimRef> refs = make_refs(bounds, root);
   std::mt19937 rng(7);  // 32-bit results
   const auto next = [&rng] { return static_cast<uint32_t>(rng()); };
-  int checked = 0;
+  int checked = 0, checked_small = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const uint32_t size = 2 + next() % (trial % 2 == 0 ? 12u : 400u);
     const uint32_t begin = next() % (root.size() - size);
@@ -127,6 +128,17 @@ TEST(SahBinning, SweepFindsTheCheapestBoundaryOfABruteForceSearch) {
     }
     const std::optional<detail::SahSplit> best = detail::best_sah_split(bins, *mapping, range.size());
     ASSERT_EQ(best.has_value(), expected.has_value()) << "trial " << trial;
+    if (size <= detail::kSmallSahRange) {
+      // Small ranges skip the bins altogether and must still agree.
+      const std::optional<detail::SahSplit> small = detail::best_sah_split_small(refs, range, *mapping);
+      ASSERT_EQ(small.has_value(), expected.has_value()) << "trial " << trial;
+      if (small) {
+        EXPECT_EQ(small->axis, expected->axis) << "trial " << trial;
+        EXPECT_EQ(small->boundary, expected->boundary) << "trial " << trial;
+        EXPECT_EQ(small->cost, expected->cost) << "trial " << trial;
+        ++checked_small;
+      }
+    }
     if (!best) continue;
     EXPECT_EQ(best->axis, expected->axis) << "trial " << trial;
     EXPECT_EQ(best->boundary, expected->boundary) << "trial " << trial;
@@ -134,6 +146,7 @@ TEST(SahBinning, SweepFindsTheCheapestBoundaryOfABruteForceSearch) {
     ++checked;
   }
   EXPECT_GT(checked, 2500);
+  EXPECT_GT(checked_small, 1200);
 }
 
 // Checks one side of a split against the input: the references satisfy (or not) the predicate, the
