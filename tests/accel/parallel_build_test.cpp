@@ -94,7 +94,7 @@ TEST(SahBinning, SweepFindsTheCheapestBoundaryOfABruteForceSearch) {
   const auto next = [&rng] { return static_cast<uint32_t>(rng()); };
   int checked = 0, checked_small = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    const uint32_t size = 2 + next() % (trial % 2 == 0 ? 12u : 400u);
+    const uint32_t size = 2 + next() % (trial % 2 == 0 ? detail::kSmallSahRange - 1 : 400u);
     const uint32_t begin = next() % (root.size() - size);
     const PrimRange range = detail::bound_refs(refs, begin, begin + size, false, 1024);
     const uint32_t bin_count = trial % 3 == 0 ? 16u : 2u + next() % 60u;
