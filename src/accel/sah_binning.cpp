@@ -6,24 +6,42 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
 
+#include <emmintrin.h>
+
+#include <algorithm>
 #include <limits>
 
 namespace glint::accel::detail {
 namespace {
 
-void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, const BinMapping& shared_mapping,
+// Per reference: the three bin indices in one SSE computation, then per axis one min and one max on
+// the bin's rows. Operation for operation what BinMapping::bin and glm::min/max compute:
+// _mm_min_ps(a, b) is (a < b ? a : b) and glm::min(x, y) is (y < x ? y : x), so glm::min(bin, ref) ==
+// _mm_min_ps(ref, bin) bit for bit (signed zeros included), and likewise for max.
+void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, const BinMapping& mapping,
                 SahBins& bins) {
-  // Local copies: the stores into the bins cannot alias them, so they stay in registers.
-  const BinMapping mapping = shared_mapping;
   const uint32_t bin_count = mapping.bin_count;
-  std::array<SahBin*, 3> axis_bins{&bins.bins[0], &bins.bins[bin_count], &bins.bins[2 * size_t{bin_count}]};
+  const __m128 origin = _mm_setr_ps(mapping.origin.x, mapping.origin.y, mapping.origin.z, 0.0f);
+  const __m128 scale = _mm_setr_ps(mapping.scale.x, mapping.scale.y, mapping.scale.z, 0.0f);
+  const __m128 last_bin = _mm_set1_ps(static_cast<float>(bin_count - 1));
+  const __m128 zero = _mm_setzero_ps();
+  float* const mins = bins.box_min[0].data();
+  float* const maxs = bins.box_max[0].data();
+  uint32_t* const counts = bins.counts.data();
+  alignas(16) int32_t bin[4];
   for (uint32_t i = begin; i != end; ++i) {
     const PrimRef& ref = refs[i];
+    const __m128 position = _mm_mul_ps(_mm_sub_ps(_mm_setr_ps(ref.centroid.x, ref.centroid.y, ref.centroid.z, 0.0f), origin), scale);
+    // max(position, 0) maps NaN and everything not above 0 to bin 0, min() the top to the last bin,
+    // and truncation does the rest, as in BinMapping::bin.
+    _mm_store_si128(reinterpret_cast<__m128i*>(bin), _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, zero), last_bin)));
+    const __m128 lo = _mm_loadu_ps(&ref.box_min.x);  // lane 3: the index bits, never read back
+    const __m128 hi = _mm_loadu_ps(&ref.box_max.x);  // lane 3: centroid.x, likewise
     for (int axis = 0; axis < 3; ++axis) {
-      SahBin& bin = axis_bins[static_cast<size_t>(axis)][mapping.bin(ref.centroid, axis)];
-      bin.box_min = glm::min(bin.box_min, ref.box_min);
-      bin.box_max = glm::max(bin.box_max, ref.box_max);
-      ++bin.count;
+      const uint32_t slot = static_cast<uint32_t>(axis) * bin_count + static_cast<uint32_t>(bin[axis]);
+      _mm_storeu_ps(mins + 4 * slot, _mm_min_ps(lo, _mm_loadu_ps(mins + 4 * slot)));
+      _mm_storeu_ps(maxs + 4 * slot, _mm_max_ps(hi, _mm_loadu_ps(maxs + 4 * slot)));
+      ++counts[slot];
     }
   }
 }
@@ -65,24 +83,31 @@ std::optional<BinMapping> bin_mapping(const Aabb& centroid_box, uint32_t bin_cou
 
 void SahBins::clear(uint32_t count) {
   bin_count = count;
-  for (uint32_t i = 0; i < 3 * count; ++i)
-    bins[i] = SahBin{vec3(std::numeric_limits<float>::infinity()), 0, vec3(-std::numeric_limits<float>::infinity())};
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (uint32_t i = 0; i < 3 * count; ++i) {
+    box_min[i] = {inf, inf, inf, inf};
+    box_max[i] = {-inf, -inf, -inf, -inf};
+    counts[i] = 0;
+  }
 }
 
 void SahBins::add(const SahBins& other) {
   for (uint32_t i = 0; i < 3 * bin_count; ++i) {
-    bins[i].box_min = glm::min(bins[i].box_min, other.bins[i].box_min);
-    bins[i].box_max = glm::max(bins[i].box_max, other.bins[i].box_max);
-    bins[i].count += other.bins[i].count;
+    for (int axis = 0; axis < 3; ++axis) {
+      box_min[i][axis] = std::min(box_min[i][axis], other.box_min[i][axis]);
+      box_max[i][axis] = std::max(box_max[i][axis], other.box_max[i][axis]);
+    }
+    counts[i] += other.counts[i];
   }
 }
 
 bool SahBins::operator==(const SahBins& other) const {
   if (bin_count != other.bin_count) return false;
-  for (uint32_t i = 0; i < 3 * bin_count; ++i)
-    if (bins[i].count != other.bins[i].count || bins[i].box_min != other.bins[i].box_min ||
-        bins[i].box_max != other.bins[i].box_max)
-      return false;
+  for (int axis = 0; axis < 3; ++axis)
+    for (uint32_t b = 0; b < bin_count; ++b)
+      if (count(axis, b) != other.count(axis, b) || box(axis, b).min != other.box(axis, b).min ||
+          box(axis, b).max != other.box(axis, b).max)
+        return false;
   return true;
 }
 
@@ -114,10 +139,9 @@ std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& ma
     uint32_t right_count = 0;
     float cost_right = 0.0f;
     for (uint32_t b = bin_count - 1; b > 0; --b) {
-      const SahBin& bin = bins.at(axis, b);
-      if (bin.count != 0) {
-        right.extend(Aabb{bin.box_min, bin.box_max});
-        right_count += bin.count;
+      if (bins.count(axis, b) != 0) {
+        right.extend(bins.box(axis, b));
+        right_count += bins.count(axis, b);
         cost_right = half_area(right) * static_cast<float>(right_count);
       }
       right_cost[b] = cost_right;
@@ -125,10 +149,9 @@ std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& ma
     Aabb left;
     uint32_t left_count = 0;
     for (uint32_t b = 1; b < bin_count; ++b) {
-      const SahBin& bin = bins.at(axis, b - 1);
-      if (bin.count == 0) continue;
-      left.extend(Aabb{bin.box_min, bin.box_max});
-      left_count += bin.count;
+      if (bins.count(axis, b - 1) == 0) continue;
+      left.extend(bins.box(axis, b - 1));
+      left_count += bins.count(axis, b - 1);
       if (left_count == count) break;  // everything is left from here on
       const float cost = half_area(left) * static_cast<float>(left_count) + right_cost[b];
       if (cost < best_cost) {

@@ -35,21 +35,24 @@ struct BinMapping {
 // split along). bin_count in [2, kMaxSahBins].
 std::optional<BinMapping> bin_mapping(const Aabb& centroid_box, uint32_t bin_count);
 
-struct SahBin {
-  vec3 box_min;
-  uint32_t count;
-  vec3 box_max;
-};
-
-// Fixed capacity, so binning a node allocates nothing; only the first 3 * bin_count entries are
-// initialised (clear) and used.
+// Fixed capacity, so binning a node allocates nothing; only the first 3 * bin_count bins are
+// initialised (clear) and used, bin (axis, b) at index axis * bin_count + b. A bin's box is two
+// 4-float rows (the fourth lane unused), so one SSE min and one max update it (unaligned loads: a
+// TBB-allocated copy need not keep the 16-byte alignment).
 struct SahBins {
   uint32_t bin_count = 0;
-  std::array<SahBin, 3 * kMaxSahBins> bins;
+  alignas(16) std::array<std::array<float, 4>, 3 * kMaxSahBins> box_min;
+  alignas(16) std::array<std::array<float, 4>, 3 * kMaxSahBins> box_max;
+  std::array<uint32_t, 3 * kMaxSahBins> counts;
 
   void clear(uint32_t count);
-  SahBin& at(int axis, uint32_t b) { return bins[static_cast<uint32_t>(axis) * bin_count + b]; }
-  const SahBin& at(int axis, uint32_t b) const { return bins[static_cast<uint32_t>(axis) * bin_count + b]; }
+  uint32_t index(int axis, uint32_t b) const { return static_cast<uint32_t>(axis) * bin_count + b; }
+  uint32_t count(int axis, uint32_t b) const { return counts[index(axis, b)]; }
+  Aabb box(int axis, uint32_t b) const {
+    const auto& lo = box_min[index(axis, b)];
+    const auto& hi = box_max[index(axis, b)];
+    return {vec3(lo[0], lo[1], lo[2]), vec3(hi[0], hi[1], hi[2])};
+  }
   void add(const SahBins& other);  // bin-wise union of boxes, sum of counts
   // Same bin count, and every used bin has the same count and (when not empty) the same box.
   bool operator==(const SahBins& other) const;
