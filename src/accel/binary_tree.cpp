@@ -5,7 +5,7 @@
 namespace glint::accel::detail {
 
 ParallelArray<SubtreeSummary> summarise_tree(const BinaryTree& tree, const BuildOptions& options) {
-  ParallelArray<SubtreeSummary> summaries(tree.nodes.size());
+  ParallelArray<SubtreeSummary> summaries(tree.nodes.size(), kForOverwrite);  // the sweep visits every node
   visit_bottom_up(
       tree, [&](uint32_t leaf) { summaries[leaf] = summarise_leaf(tree.nodes[leaf].box, options); },
       [&](uint32_t node) {
@@ -16,7 +16,7 @@ ParallelArray<SubtreeSummary> summarise_tree(const BinaryTree& tree, const Build
 }
 
 ParallelArray<SubtreeSummary> fit_and_summarise_tree(BinaryTree& tree, const BuildOptions& options) {
-  ParallelArray<SubtreeSummary> summaries(tree.nodes.size());
+  ParallelArray<SubtreeSummary> summaries(tree.nodes.size(), kForOverwrite);  // the sweep visits every node
   visit_bottom_up(
       tree, [&](uint32_t leaf) { summaries[leaf] = summarise_leaf(tree.nodes[leaf].box, options); },
       [&](uint32_t node) {

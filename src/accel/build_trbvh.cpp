@@ -128,7 +128,7 @@ struct Rebuild {
 
 uint32_t restructure_treelets(BinaryTree& tree, const BuildOptions& options, uint32_t min_prims) {
   if (tree.leaf_count < 3) return 0;
-  ParallelArray<SubtreeSummary> summaries(tree.nodes.size());
+  ParallelArray<SubtreeSummary> summaries(tree.nodes.size(), kForOverwrite);  // the sweep visits every node
   std::atomic<uint32_t> changed{0};
   visit_bottom_up(
       tree, [&](uint32_t leaf) { summaries[leaf] = summarise_leaf(tree.nodes[leaf].box, options); },

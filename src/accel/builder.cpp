@@ -61,9 +61,9 @@ Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& 
   const auto start = std::chrono::steady_clock::now();
   // Not triangle_bounds(): its std::vectors are zeroed (and paged in) by one thread, which on many
   // cores took longer than some whole builds.
-  detail::ParallelArray<Aabb> boxes(mesh.triangle_count);
+  detail::ParallelArray<Aabb> boxes(mesh.triangle_count, detail::kForOverwrite);
   triangle_boxes(mesh, boxes);
-  detail::ParallelArray<vec3> centroids(mesh.triangle_count);
+  detail::ParallelArray<vec3> centroids(mesh.triangle_count, detail::kForOverwrite);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) centroids[i] = boxes[i].center();
   });

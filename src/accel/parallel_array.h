@@ -2,8 +2,8 @@
 // Internal to the builders: a fixed-size array whose elements are constructed by parallel TBB chunks.
 // A std::vector of n elements is constructed (and its fresh pages faulted in) by one thread; for the
 // builders' scratch arrays of about a million nodes that serial step alone took longer on 16 cores
-// than the parallel build steps around it. Elements are value-initialised, as in a std::vector. A
-// contiguous range, so it converts to std::span.
+// than the parallel build steps around it. Elements are value-initialised, as in a std::vector, or,
+// with kForOverwrite, not initialised at all. A contiguous range, so it converts to std::span.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -14,6 +14,10 @@
 #include <utility>
 
 namespace glint::accel::detail {
+
+// Tag for arrays every element of which is written before it is read: no construction pass at all.
+struct ForOverwrite {};
+inline constexpr ForOverwrite kForOverwrite{};
 
 template <typename T>
 class ParallelArray {
@@ -36,6 +40,11 @@ class ParallelArray {
     storage_ = std::move(other.storage_);
     return *this;
   }
+
+  // Elements left unconstructed: T is trivially copyable and destructible (an implicit-lifetime type),
+  // so the storage's allocation creates them and the first assignment gives them values. Pages are
+  // then first touched by whoever writes them, usually a parallel loop.
+  ParallelArray(size_t size, ForOverwrite) : size_(size), storage_(std::make_unique_for_overwrite<Storage[]>(size)) {}
 
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }

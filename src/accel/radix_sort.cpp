@@ -37,8 +37,8 @@ void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint
   const size_t chunk_count = (count + kChunkSize - 1) / kChunkSize;
   std::vector<Histogram> offsets(chunk_count);  // counts, then (after the prefix sum) output offsets
   // Passes alternate between the caller's arrays and these (filled in parallel, not by one thread).
-  detail::ParallelArray<uint64_t> key_buffer(count);
-  detail::ParallelArray<uint32_t> value_buffer(count);
+  detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
+  detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
   uint64_t* keys_in = keys.data();
   uint32_t* values_in = values.data();
   uint64_t* keys_out = key_buffer.data();

@@ -123,7 +123,7 @@ void refit(Bvh& bvh, const TriangleMesh& mesh) {
   // Triangle boxes first, in triangle order (sequential reads of the index buffer, in parallel),
   // then the sweeps read one box per primitive: faster than gathering each leaf's triangles through
   // the index buffer in leaf order, measured with the deforming dinosaurs.
-  detail::ParallelArray<Aabb> boxes(mesh.triangle_count);
+  detail::ParallelArray<Aabb> boxes(mesh.triangle_count, detail::kForOverwrite);
   triangle_boxes(mesh, boxes);
   refit(bvh, boxes);
 }
