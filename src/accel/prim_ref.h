@@ -22,7 +22,8 @@ struct PrimRef {
 
 // No default member initialisers on purpose: arrays of n references are allocated uninitialised and
 // first written (and paged in) by parallel loops, not by one thread zeroing them.
-static_assert(sizeof(PrimRef) == 40 && std::is_trivially_default_constructible_v<PrimRef>);
+static_assert(sizeof(PrimRef) == 40 && std::is_trivially_copyable_v<PrimRef> &&
+              std::is_trivially_destructible_v<PrimRef>);
 
 // A contiguous range [begin, end) of references and the boxes of what it holds.
 struct PrimRange {

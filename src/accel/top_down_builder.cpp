@@ -1,5 +1,6 @@
 #include "accel/top_down_builder.h"
 
+#include "accel/parallel_array.h"
 #include "core/error.h"
 
 #include <tbb/task_group.h>
@@ -8,7 +9,6 @@
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <memory>
 #include <type_traits>
 
 namespace glint::accel::detail {
@@ -37,7 +37,7 @@ struct BuildNode {
 };
 
 // Allocated uninitialised (2n - 1 of them, most never touched): no thread zeroes 40 MB up front.
-static_assert(std::is_trivially_default_constructible_v<BuildNode>);
+static_assert(std::is_trivially_copyable_v<BuildNode> && std::is_trivially_destructible_v<BuildNode>);
 
 struct Builder {
   const BuildOptions& options;
@@ -164,17 +164,17 @@ Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const s
   const auto count = static_cast<uint32_t>(input.boxes.size());
   if (count > 0) {
     const uint32_t chunk = parallel_chunk(options);
-    const auto refs = std::make_unique_for_overwrite<PrimRef[]>(count);
-    const auto scratch = std::make_unique_for_overwrite<PrimRef[]>(count);
+    ParallelArray<PrimRef> refs(count, kForOverwrite);
+    ParallelArray<PrimRef> scratch(count, kForOverwrite);
     // A binary tree over n leaves-worth of primitives has at most 2n - 1 nodes.
-    const auto nodes = std::make_unique_for_overwrite<BuildNode[]>(2 * size_t{count} - 1);
+    ParallelArray<BuildNode> nodes(2 * size_t{count} - 1, kForOverwrite);
     bvh.prim_indices.resize(count);
-    Builder builder{options, policy, chunk, nodes.get(), {{{refs.get(), count}, {scratch.get(), count}}},
+    Builder builder{options, policy, chunk, nodes.data(), {std::span<PrimRef>(refs), std::span<PrimRef>(scratch)},
                     bvh.prim_indices};
     const PrimRange root = make_prim_refs(input, builder.refs[0], chunk);
     bvh.depth = builder.build(0, root, 0, 1);
     bvh.nodes.resize(builder.next_node.load());
-    const Renumberer renumberer{nodes.get(), bvh.nodes.data(), std::max(options.parallel_threshold, 2u)};
+    const Renumberer renumberer{nodes.data(), bvh.nodes.data(), std::max(options.parallel_threshold, 2u)};
     renumberer.emit(0, 0, 1);
   }
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
