@@ -3,6 +3,7 @@
 // becomes a flat Bvh. One primitive per leaf, explicit parent links, and a parallel bottom-up sweep
 // that visits a node only after both of its children (Karras 2012's atomic visit counters).
 #include "accel/build_options.h"
+#include "accel/parallel_array.h"
 #include "accel/primitive_bounds.h"
 
 #include <tbb/blocked_range.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -31,7 +33,7 @@ struct TreeNode {
 // nodes[0, leaf_count) are the leaves, nodes[leaf_count, 2 leaf_count - 1) the interior nodes; the
 // root is any of them (a lone leaf when leaf_count == 1).
 struct BinaryTree {
-  std::vector<TreeNode> nodes;
+  ParallelArray<TreeNode> nodes;
   uint32_t leaf_count = 0;
   uint32_t root = kNoNode;
 };
@@ -83,14 +85,15 @@ inline SubtreeSummary summarise_interior(const Aabb& box, const SubtreeSummary& 
 template <typename VisitLeaf, typename VisitInterior>
 void visit_bottom_up(const BinaryTree& tree, VisitLeaf&& visit_leaf, VisitInterior&& visit_interior) {
   const uint32_t leaves = tree.leaf_count;
-  std::vector<std::atomic<uint32_t>> arrivals(leaves > 0 ? leaves - 1 : 0);
-  for (std::atomic<uint32_t>& arrival : arrivals) arrival.store(0, std::memory_order_relaxed);
+  // Zeroed by parallel chunks (ParallelArray), used through atomic_ref.
+  ParallelArray<uint32_t> arrivals(leaves > 0 ? leaves - 1 : 0);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, leaves, 512), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t leaf = r.begin(); leaf != r.end(); ++leaf) {
       visit_leaf(leaf);
       uint32_t node = tree.nodes[leaf].parent;
       // acq_rel: the second arrival sees everything the first one wrote below the node.
-      while (node != kNoNode && arrivals[node - leaves].fetch_add(1, std::memory_order_acq_rel) == 1) {
+      while (node != kNoNode &&
+             std::atomic_ref<uint32_t>(arrivals[node - leaves]).fetch_add(1, std::memory_order_acq_rel) == 1) {
         visit_interior(node);
         node = tree.nodes[node].parent;
       }
@@ -99,7 +102,11 @@ void visit_bottom_up(const BinaryTree& tree, VisitLeaf&& visit_leaf, VisitInteri
 }
 
 // Summaries of every node (see SubtreeSummary), computed bottom-up in parallel.
-std::vector<SubtreeSummary> summarise_tree(const BinaryTree& tree, const BuildOptions& options);
+ParallelArray<SubtreeSummary> summarise_tree(const BinaryTree& tree, const BuildOptions& options);
+
+// fit_interior_boxes and summarise_tree in one bottom-up sweep instead of two (only the leaf boxes
+// need to be set).
+ParallelArray<SubtreeSummary> fit_and_summarise_tree(BinaryTree& tree, const BuildOptions& options);
 
 // Interior boxes as the union of their children's, bottom-up in parallel (leaf boxes must be set).
 void fit_interior_boxes(BinaryTree& tree);
@@ -108,7 +115,8 @@ void fit_interior_boxes(BinaryTree& tree);
 // max_leaf_size >= 1); glint::Error naming the builder otherwise.
 void check_build_input(const BuildInput& input, const BuildOptions& options, std::string_view builder);
 
-// Leaves in input order: leaf i holds prims[i] with its box.
-BinaryTree make_leaves(const BuildInput& input, const std::vector<uint32_t>& prims);
+// Leaves in input order: leaf i holds prims[i] with its box. The interior nodes are default
+// (kNoNode links, empty boxes).
+BinaryTree make_leaves(const BuildInput& input, std::span<const uint32_t> prims);
 
 }  // namespace glint::accel::detail

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <bit>
 #include <chrono>
+#include <span>
+#include <utility>
 
 namespace glint::accel {
 namespace detail {
@@ -16,7 +18,7 @@ namespace {
 // Karras's delta(i, j): the length of the common prefix of keys i and j, where a key is the Morton
 // code followed by the 32-bit position (so equal codes still differ); -1 outside [0, count).
 struct CommonPrefix {
-  const std::vector<uint64_t>& codes;
+  std::span<const uint64_t> codes;
   int64_t count;
 
   int operator()(int64_t i, int64_t j) const {
@@ -61,7 +63,7 @@ void build_interior(BinaryTree& tree, const CommonPrefix& delta, int64_t i) {
 
 }  // namespace
 
-BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order) {
+BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order, bool fit_boxes) {
   BinaryTree tree = make_leaves(input, order.prims);
   const uint32_t count = tree.leaf_count;
   if (count < 2) return tree;
@@ -70,7 +72,7 @@ BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order) 
   tbb::parallel_for(tbb::blocked_range<int64_t>(0, int64_t{count} - 1, 1024), [&](const tbb::blocked_range<int64_t>& r) {
     for (int64_t i = r.begin(); i != r.end(); ++i) build_interior(tree, delta, i);
   });
-  fit_interior_boxes(tree);
+  if (fit_boxes) fit_interior_boxes(tree);
   return tree;
 }
 
@@ -83,8 +85,9 @@ BinaryTree build_lbvh_tree(const BuildInput& input) {
 Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "lbvh");
-  detail::BinaryTree tree = detail::build_lbvh_tree(input);
-  Bvh bvh = detail::flatten_tree(tree, options, "lbvh");
+  detail::BinaryTree tree = detail::build_karras_tree(input, sort_by_morton(input.centroids), false);
+  detail::ParallelArray<detail::SubtreeSummary> summaries = detail::fit_and_summarise_tree(tree, options);
+  Bvh bvh = detail::flatten_tree(tree, std::move(summaries), options, "lbvh");
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

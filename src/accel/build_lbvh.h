@@ -17,10 +17,11 @@ Bvh build_lbvh(const BuildInput& input, const BuildOptions& options = {});
 namespace detail {
 
 // The Karras radix tree over order.codes (leaf i = primitive order.prims[i]; interior node i of the
-// paper is nodes[leaf_count + i], the root is interior 0) with fitted boxes. Equal codes are told
-// apart by their position in the sorted order (the paper's index tie-break), so duplicates form
-// balanced subtrees.
-BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order);
+// paper is nodes[leaf_count + i], the root is interior 0), with fitted boxes unless fit_boxes is
+// false (then only the leaves have boxes: fit_and_summarise_tree fits them later in the same sweep
+// that summarises). Equal codes are told apart by their position in the sorted order (the paper's
+// index tie-break), so duplicates form balanced subtrees.
+BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order, bool fit_boxes = true);
 
 // Morton sort plus build_karras_tree: the unflattened LBVH, which trbvh restructures.
 BinaryTree build_lbvh_tree(const BuildInput& input);

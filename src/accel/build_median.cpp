@@ -5,7 +5,7 @@
 namespace glint::accel {
 namespace {
 
-std::optional<uint32_t> median_policy(const detail::SplitContext& context, const detail::PrimRange& range) {
+std::optional<detail::Split> median_policy(const detail::SplitContext& context, const detail::PrimRange& range) {
   if (range.size() <= context.options.max_leaf_size) return std::nullopt;
   return detail::object_median_split(context, range);
 }

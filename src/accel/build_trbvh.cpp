@@ -8,6 +8,7 @@
 #include <bit>
 #include <chrono>
 #include <limits>
+#include <span>
 
 namespace glint::accel {
 namespace detail {
@@ -62,7 +63,7 @@ struct TreeletOptimum {
   std::array<uint8_t, kSubsets> split;  // left part of the best partition (contains the lowest bit)
 };
 
-void optimise(const BinaryTree& tree, const std::vector<SubtreeSummary>& summaries, const Treelet& treelet,
+void optimise(const BinaryTree& tree, std::span<const SubtreeSummary> summaries, const Treelet& treelet,
               const BuildOptions& options, TreeletOptimum& best) {
   const uint32_t full = (1u << treelet.leaf_count) - 1;
   for (uint32_t set = 1; set <= full; ++set) {
@@ -98,7 +99,7 @@ void optimise(const BinaryTree& tree, const std::vector<SubtreeSummary>& summari
 
 struct Rebuild {
   BinaryTree& tree;
-  std::vector<SubtreeSummary>& summaries;
+  std::span<SubtreeSummary> summaries;
   const Treelet& treelet;
   const TreeletOptimum& best;
   uint32_t next_interior = 0;
@@ -127,7 +128,7 @@ struct Rebuild {
 
 uint32_t restructure_treelets(BinaryTree& tree, const BuildOptions& options, uint32_t min_prims) {
   if (tree.leaf_count < 3) return 0;
-  std::vector<SubtreeSummary> summaries(tree.nodes.size());
+  ParallelArray<SubtreeSummary> summaries(tree.nodes.size(), kForOverwrite);  // the sweep visits every node
   std::atomic<uint32_t> changed{0};
   visit_bottom_up(
       tree, [&](uint32_t leaf) { summaries[leaf] = summarise_leaf(tree.nodes[leaf].box, options); },

@@ -60,7 +60,7 @@ struct Rebalancer {
 // At every visited node, level - 1 + balanced_height(prims) <= kMaxBvhDepth holds (true at the root
 // for fewer than 2^31 primitives), so rebalancing it always fits; descend only while the children
 // keep that promise.
-void limit_depth(Rebalancer& rebalancer, const std::vector<SubtreeSummary>& summaries, uint32_t node, uint32_t level,
+void limit_depth(Rebalancer& rebalancer, std::span<const SubtreeSummary> summaries, uint32_t node, uint32_t level,
                  bool& changed) {
   if (level - 1 + summaries[node].height <= kMaxBvhDepth) return;
   const TreeNode& n = rebalancer.tree.nodes[node];
@@ -79,7 +79,7 @@ void limit_depth(Rebalancer& rebalancer, const std::vector<SubtreeSummary>& summ
 
 struct Flattener {
   const BinaryTree& tree;
-  const std::vector<SubtreeSummary>& summaries;
+  std::span<const SubtreeSummary> summaries;
   Bvh& bvh;
   uint32_t parallel_threshold;
 
@@ -114,25 +114,22 @@ struct Flattener {
     }
   }
 
-  // The subtree's primitives, left to right, into consecutive prim_indices slots.
-  void gather_prims(uint32_t node, uint32_t slot) const {
-    std::vector<uint32_t> stack{node};
-    while (!stack.empty()) {
-      const TreeNode& n = tree.nodes[stack.back()];
-      stack.pop_back();
-      if (n.is_leaf()) {
-        bvh.prim_indices[slot++] = n.prim;
-      } else {
-        stack.push_back(n.right);
-        stack.push_back(n.left);
-      }
+  // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
+  // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
+  // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
+  uint32_t gather_prims(uint32_t node, uint32_t slot) const {
+    const TreeNode& n = tree.nodes[node];
+    if (n.is_leaf()) {
+      bvh.prim_indices[slot] = n.prim;
+      return slot + 1;
     }
+    return gather_prims(n.right, gather_prims(n.left, slot));
   }
 };
 
 }  // namespace
 
-bool limit_tree_depth(BinaryTree& tree, const std::vector<SubtreeSummary>& summaries) {
+bool limit_tree_depth(BinaryTree& tree, std::span<const SubtreeSummary> summaries) {
   if (tree.leaf_count == 0 || summaries[tree.root].height <= kMaxBvhDepth) return false;
   Rebalancer rebalancer{tree, {}, {}};
   bool changed = false;
@@ -141,10 +138,15 @@ bool limit_tree_depth(BinaryTree& tree, const std::vector<SubtreeSummary>& summa
 }
 
 Bvh flatten_tree(BinaryTree& tree, const BuildOptions& options, const std::string& builder) {
+  if (tree.leaf_count == 0) return flatten_tree(tree, {}, options, builder);
+  return flatten_tree(tree, summarise_tree(tree, options), options, builder);
+}
+
+Bvh flatten_tree(BinaryTree& tree, ParallelArray<SubtreeSummary> summaries, const BuildOptions& options,
+                 const std::string& builder) {
   Bvh bvh;
   bvh.builder = builder;
   if (tree.leaf_count == 0) return bvh;
-  std::vector<SubtreeSummary> summaries = summarise_tree(tree, options);
   if (limit_tree_depth(tree, summaries)) summaries = summarise_tree(tree, options);
   const SubtreeSummary& root = summaries[tree.root];
   bvh.nodes.resize(root.out_nodes);

@@ -50,8 +50,8 @@ template <typename Encode>
 MortonOrder sorted_codes(std::span<const vec3> centroids, const UnitMapping& mapping, uint32_t bits, Encode encode) {
   MortonOrder order;
   order.bits = bits;
-  order.codes.resize(centroids.size());
-  order.prims.resize(centroids.size());
+  order.codes = detail::ParallelArray<uint64_t>(centroids.size(), detail::kForOverwrite);
+  order.prims = detail::ParallelArray<uint32_t>(centroids.size(), detail::kForOverwrite);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, centroids.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) {
       order.codes[i] = encode(mapping(centroids[i]));

@@ -4,11 +4,11 @@
 // x, y and z (x in the lowest of every three bits), sort the codes.
 #include "accel/build_options.h"
 #include "accel/morton_code.h"
+#include "accel/parallel_array.h"
 #include "core/math.h"
 
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace glint::accel {
 
@@ -16,10 +16,11 @@ namespace glint::accel {
 // accel/morton_code.h, shared with the GPU builders.
 
 // Centroids sorted along the Z curve. codes[i] is the code of primitive prims[i]; equal codes keep
-// the primitives in index order (the radix sort is stable), so the result is deterministic.
+// the primitives in index order (the radix sort is stable), so the result is deterministic. The
+// arrays are filled by parallel loops from the start (parallel_array.h), not zeroed by one thread.
 struct MortonOrder {
-  std::vector<uint64_t> codes;
-  std::vector<uint32_t> prims;
+  detail::ParallelArray<uint64_t> codes;
+  detail::ParallelArray<uint32_t> prims;
   uint32_t bits = 0;  // 30 or 63
 };
 

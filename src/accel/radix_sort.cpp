@@ -1,5 +1,6 @@
 #include "accel/radix_sort.h"
 
+#include "accel/parallel_array.h"
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>
@@ -25,7 +26,7 @@ uint32_t digit_of(uint64_t key, uint32_t shift) { return static_cast<uint32_t>(k
 
 }  // namespace
 
-void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values, uint32_t key_bits) {
+void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t key_bits) {
   if (keys.size() != values.size())
     fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
   if (key_bits < 1 || key_bits > 64) fail("accel: radix_sort_pairs: key_bits must be in [1, 64], got {}", key_bits);
@@ -35,8 +36,13 @@ void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values
 
   const size_t chunk_count = (count + kChunkSize - 1) / kChunkSize;
   std::vector<Histogram> offsets(chunk_count);  // counts, then (after the prefix sum) output offsets
-  std::vector<uint64_t> key_buffer(count);
-  std::vector<uint32_t> value_buffer(count);
+  // Passes alternate between the caller's arrays and these (filled in parallel, not by one thread).
+  detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
+  detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
+  uint64_t* keys_in = keys.data();
+  uint32_t* values_in = values.data();
+  uint64_t* keys_out = key_buffer.data();
+  uint32_t* values_out = value_buffer.data();
   const auto chunk_range = [&](size_t chunk) {
     return std::pair{chunk * kChunkSize, std::min(count, (chunk + 1) * kChunkSize)};
   };
@@ -46,7 +52,7 @@ void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values
       Histogram& histogram = offsets[chunk];
       histogram.fill(0);
       const auto [begin, end] = chunk_range(chunk);
-      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys[i], shift)];
+      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys_in[i], shift)];
     });
 
     // Exclusive prefix sum in (digit, chunk) order: all keys with a smaller digit come first, then
@@ -69,14 +75,20 @@ void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values
       Histogram& next = offsets[chunk];
       const auto [begin, end] = chunk_range(chunk);
       for (size_t i = begin; i != end; ++i) {
-        const uint32_t slot = next[digit_of(keys[i], shift)]++;
-        key_buffer[slot] = keys[i];
-        value_buffer[slot] = values[i];
+        const uint32_t slot = next[digit_of(keys_in[i], shift)]++;
+        keys_out[slot] = keys_in[i];
+        values_out[slot] = values_in[i];
       }
     });
-    keys.swap(key_buffer);
-    values.swap(value_buffer);
+    std::swap(keys_in, keys_out);
+    std::swap(values_in, values_out);
   }
+  if (keys_in == keys.data()) return;
+  // An odd number of passes moved anything: the result is in the buffers.
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, kChunkSize), [&](const tbb::blocked_range<size_t>& r) {
+    std::copy(keys_in + r.begin(), keys_in + r.end(), keys.data() + r.begin());
+    std::copy(values_in + r.begin(), values_in + r.end(), values.data() + r.begin());
+  });
 }
 
 }  // namespace glint::accel

@@ -5,14 +5,14 @@
 // chunks scatter in parallel. Chunks keep their input order, so the sort is stable and its output
 // does not depend on the number of threads.
 #include <cstdint>
-#include <vector>
+#include <span>
 
 namespace glint::accel {
 
 // Sorts keys ascending, moving values along; equal keys keep their relative order. Only the low
 // `key_bits` bits of every key take part (the others must be zero); key_bits in [1, 64], glint::Error
-// otherwise or when the vectors differ in size. Passes in which every key has the same digit are
+// otherwise or when the spans differ in size. Passes in which every key has the same digit are
 // skipped, so sorting 30-bit codes costs 4 passes and already sorted digits cost no scatter.
-void radix_sort_pairs(std::vector<uint64_t>& keys, std::vector<uint32_t>& values, uint32_t key_bits);
+void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t key_bits);
 
 }  // namespace glint::accel

@@ -1,16 +1,15 @@
 #include "accel/top_down_builder.h"
 
+#include "accel/parallel_array.h"
 #include "core/error.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
-#include <numeric>
-#include <vector>
+#include <type_traits>
 
 namespace glint::accel::detail {
 namespace {
@@ -27,114 +26,129 @@ uint32_t median_levels(uint32_t count, uint32_t max_leaf_size) {
   return levels;
 }
 
+// A node as the recursion leaves it. Tasks take sibling pairs from a shared counter, so indices
+// depend on scheduling until renumber() lays the tree out depth-first.
+struct BuildNode {
+  vec3 bounds_min;
+  uint32_t first;  // left child (interior) or first prim_indices slot (leaf)
+  vec3 bounds_max;
+  uint32_t prim_count;   // 0 for an interior node
+  uint32_t descendants;  // nodes below this one
+};
+
+// Allocated uninitialised (2n - 1 of them, most never touched): no thread zeroes 40 MB up front.
+static_assert(std::is_trivially_copyable_v<BuildNode> && std::is_trivially_destructible_v<BuildNode>);
+
 struct Builder {
-  const BuildInput& input;
   const BuildOptions& options;
   SplitPolicy policy;
-  std::vector<BvhNode>& nodes;
-  std::vector<uint32_t>& prim_indices;
+  uint32_t chunk;
+  BuildNode* nodes;
+  std::array<std::span<PrimRef>, 2> refs;  // a range's references are in one, the other is scratch
+  std::span<uint32_t> prim_indices;
   std::atomic<uint32_t> next_node{1};
-  std::atomic<uint32_t> depth{0};
 
-  void build(uint32_t node_index, const PrimRange& range, uint32_t level) {
-    BvhNode& node = nodes[node_index];
-    node.set_bounds(range.box);
-    uint32_t seen = depth.load(std::memory_order_relaxed);
-    while (level > seen && !depth.compare_exchange_weak(seen, level, std::memory_order_relaxed)) {
-    }
+  SplitContext context(int buffer, bool parallel) const {
+    return {options, refs[static_cast<size_t>(buffer)], refs[static_cast<size_t>(1 - buffer)], parallel, chunk};
+  }
 
+  void make_leaf(BuildNode& node, const PrimRange& range, int buffer) {
+    node.first = range.begin;
+    node.prim_count = range.size();
+    node.descendants = 0;
+    const std::span<const PrimRef> from = refs[static_cast<size_t>(buffer)];
+    for (uint32_t i = range.begin; i != range.end; ++i) prim_indices[i] = from[i].prim;
+  }
+
+  // Builds the subtree over `range`, whose references are in refs[buffer], at nodes[index]; returns
+  // its height.
+  uint32_t build(uint32_t index, const PrimRange& range, int buffer, uint32_t level) {
+    BuildNode& node = nodes[index];
+    node.bounds_min = range.box.min;
+    node.bounds_max = range.box.max;
     const uint32_t count = range.size();
     const bool parallel = count >= options.parallel_threshold;
-    const SplitContext context{input, options, prim_indices, parallel};
-    std::optional<uint32_t> mid;
-    if (count > 1) mid = policy(context, range);
-    if (!mid && count <= options.max_leaf_size) {
-      node.first = range.begin;
-      node.prim_count = count;
-      return;
+    std::optional<Split> split;
+    if (count > 1) split = policy(context(buffer, parallel), range);
+    if (!split && count <= options.max_leaf_size) {
+      make_leaf(node, range, buffer);
+      return 1;
     }
-    const auto fits_depth = [&](uint32_t child_count) {
-      return level + 1 + median_levels(child_count, options.max_leaf_size) <= kMaxBvhDepth;
+    if (split && split->moved) buffer = 1 - buffer;
+    const auto fits_depth = [&](const PrimRange& child) {
+      return child.size() > 0 && level + 1 + median_levels(child.size(), options.max_leaf_size) <= kMaxBvhDepth;
     };
-    if (!mid || !fits_depth(*mid - range.begin) || !fits_depth(range.end - *mid))
-      mid = object_median_split(context, range);
+    if (!split || !fits_depth(split->left) || !fits_depth(split->right))
+      split = object_median_split(context(buffer, parallel), range);
 
     const uint32_t left = next_node.fetch_add(2, std::memory_order_relaxed);
     node.first = left;
     node.prim_count = 0;
-    const auto build_child = [this, level, parallel](uint32_t child, uint32_t begin, uint32_t end) {
-      build(child, bound_range(input, prim_indices, begin, end, parallel), level + 1);
-    };
+    uint32_t left_height = 0, right_height = 0;
     if (parallel) {
       tbb::task_group group;
-      group.run([&] { build_child(left, range.begin, *mid); });
-      build_child(left + 1, *mid, range.end);
+      group.run([&] { left_height = build(left, split->left, buffer, level + 1); });
+      right_height = build(left + 1, split->right, buffer, level + 1);
       group.wait();
     } else {
-      build_child(left, range.begin, *mid);
-      build_child(left + 1, *mid, range.end);
+      left_height = build(left, split->left, buffer, level + 1);
+      right_height = build(left + 1, split->right, buffer, level + 1);
+    }
+    node.descendants = 2 + nodes[left].descendants + nodes[left + 1].descendants;
+    return 1 + std::max(left_height, right_height);
+  }
+};
+
+// Writes the tree depth-first into `to` so the same input always gives the same array (reproducible
+// stats, diffs and GPU uploads): a node's two children first, then the left child's descendants, then
+// the right child's. Every subtree's place follows from the descendant counts, so large subtrees are
+// written by parallel tasks.
+struct Renumberer {
+  const BuildNode* from;
+  BvhNode* to;
+  uint32_t parallel_threshold;
+
+  void emit(uint32_t old_index, uint32_t index, uint32_t descendants_at) const {
+    const BuildNode& node = from[old_index];
+    BvhNode& out = to[index];
+    out.bounds_min = node.bounds_min;
+    out.bounds_max = node.bounds_max;
+    out.prim_count = node.prim_count;
+    if (node.prim_count != 0) {
+      out.first = node.first;
+      return;
+    }
+    out.first = descendants_at;
+    const uint32_t left = node.first;
+    const uint32_t right_descendants_at = descendants_at + 2 + from[left].descendants;
+    if (node.descendants >= parallel_threshold) {
+      tbb::task_group group;
+      group.run([&] { emit(left, descendants_at, descendants_at + 2); });
+      emit(left + 1, descendants_at + 1, right_descendants_at);
+      group.wait();
+    } else {
+      emit(left, descendants_at, descendants_at + 2);
+      emit(left + 1, descendants_at + 1, right_descendants_at);
     }
   }
 };
 
-// Node indices handed out by concurrent tasks depend on scheduling; renumber depth-first so the
-// same input always gives the same array (reproducible stats, diffs and GPU uploads).
-std::vector<BvhNode> depth_first_order(const std::vector<BvhNode>& nodes) {
-  std::vector<BvhNode> ordered;
-  ordered.reserve(nodes.size());
-  ordered.push_back(nodes[0]);
-  std::vector<uint32_t> stack{0};
-  while (!stack.empty()) {
-    const uint32_t index = stack.back();
-    stack.pop_back();
-    if (ordered[index].is_leaf()) continue;
-    const uint32_t old_left = ordered[index].left();
-    const auto new_left = static_cast<uint32_t>(ordered.size());
-    ordered.push_back(nodes[old_left]);
-    ordered.push_back(nodes[old_left + 1]);
-    ordered[index].first = new_left;
-    stack.push_back(new_left + 1);
-    stack.push_back(new_left);
-  }
-  return ordered;
-}
-
 }  // namespace
 
-PrimRange bound_range(const BuildInput& input, std::span<const uint32_t> prim_indices, uint32_t begin, uint32_t end,
-                      bool parallel) {
-  PrimRange range{begin, end, {}, {}};
-  const auto accumulate = [&](uint32_t from, uint32_t to, PrimRange acc) {
-    for (uint32_t i = from; i != to; ++i) {
-      const uint32_t prim = prim_indices[i];
-      acc.box.extend(input.boxes[prim]);
-      acc.centroid_box.extend(input.centroids[prim]);
-    }
-    return acc;
-  };
-  if (!parallel) return accumulate(begin, end, range);
-  return tbb::parallel_reduce(
-      tbb::blocked_range<uint32_t>(begin, end, 1024), range,
-      [&](const tbb::blocked_range<uint32_t>& r, PrimRange acc) { return accumulate(r.begin(), r.end(), acc); },
-      [](PrimRange a, const PrimRange& b) {
-        a.box.extend(b.box);
-        a.centroid_box.extend(b.centroid_box);
-        return a;
-      });
-}
+uint32_t parallel_chunk(const BuildOptions& options) { return std::clamp(options.parallel_threshold, 32u, 8192u); }
 
-uint32_t object_median_split(const SplitContext& context, const PrimRange& range) {
+Split object_median_split(const SplitContext& context, const PrimRange& range) {
   const uint32_t mid = range.begin + range.size() / 2;
   const vec3 extent = range.centroid_box.extent();
-  if (extent.x <= 0.0f && extent.y <= 0.0f && extent.z <= 0.0f) return mid;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
-  const auto& centroids = context.input.centroids;
-  const auto first = context.prim_indices.begin();
-  std::nth_element(first + range.begin, first + mid, first + range.end, [&](uint32_t a, uint32_t b) {
-    // Ties broken by index so the result does not depend on the incoming order's history.
-    return centroids[a][axis] < centroids[b][axis] || (centroids[a][axis] == centroids[b][axis] && a < b);
-  });
-  return mid;
+  if (extent.x > 0.0f || extent.y > 0.0f || extent.z > 0.0f) {
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const auto first = context.refs.begin();
+    std::nth_element(first + range.begin, first + mid, first + range.end, [axis](const PrimRef& a, const PrimRef& b) {
+      return a.centroid[axis] < b.centroid[axis] || (a.centroid[axis] == b.centroid[axis] && a.prim < b.prim);
+    });
+  }
+  return {bound_refs(context.refs, range.begin, mid, context.parallel, context.chunk),
+          bound_refs(context.refs, mid, range.end, context.parallel, context.chunk), false};
 }
 
 Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const std::string& name, SplitPolicy policy) {
@@ -148,17 +162,20 @@ Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const s
   Bvh bvh;
   bvh.builder = name;
   const auto count = static_cast<uint32_t>(input.boxes.size());
-  bvh.prim_indices.resize(count);
-  std::iota(bvh.prim_indices.begin(), bvh.prim_indices.end(), 0u);
   if (count > 0) {
+    const uint32_t chunk = parallel_chunk(options);
+    ParallelArray<PrimRef> refs(count, kForOverwrite);
+    ParallelArray<PrimRef> scratch(count, kForOverwrite);
     // A binary tree over n leaves-worth of primitives has at most 2n - 1 nodes.
-    std::vector<BvhNode> nodes(2 * size_t{count} - 1);
-    Builder builder{input, options, policy, nodes, bvh.prim_indices};
-    const PrimRange root = bound_range(input, bvh.prim_indices, 0, count, count >= options.parallel_threshold);
-    builder.build(0, root, 1);
-    nodes.resize(builder.next_node.load());
-    bvh.nodes = depth_first_order(nodes);
-    bvh.depth = builder.depth.load();
+    ParallelArray<BuildNode> nodes(2 * size_t{count} - 1, kForOverwrite);
+    bvh.prim_indices.resize(count);
+    Builder builder{options, policy, chunk, nodes.data(), {std::span<PrimRef>(refs), std::span<PrimRef>(scratch)},
+                    bvh.prim_indices};
+    const PrimRange root = make_prim_refs(input, builder.refs[0], chunk);
+    bvh.depth = builder.build(0, root, 0, 1);
+    bvh.nodes.resize(builder.next_node.load());
+    const Renumberer renumberer{nodes.data(), bvh.nodes.data(), std::max(options.parallel_threshold, 2u)};
+    renumberer.emit(0, 0, 1);
   }
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;

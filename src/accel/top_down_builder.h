@@ -1,11 +1,20 @@
 #pragma once
-// Internal to the builders: the recursive top-down skeleton shared by build_median and build_sah
-// (and later sbvh/kdtree-style splitters). A builder only decides where to split a range of
-// primitives; this file owns node allocation, leaves, the depth limit, TBB task parallelism on the
-// large top levels, timing, and the final deterministic node order.
+// Internal to the builders: the recursive top-down skeleton shared by build_median and build_sah. A
+// builder only decides how to split a range of primitive references; this file owns the references
+// (prim_ref.h), node allocation, leaves, the depth limit, timing and the final deterministic node
+// order, and the parallelism:
+//  - subtrees of at least options.parallel_threshold primitives are built as separate TBB tasks;
+//  - inside such large nodes a policy bins, bounds and partitions in parallel (SplitContext::parallel,
+//    prim_partition.h), which is what keeps the top levels, where there are fewer subtrees than
+//    threads, from running on one thread;
+//  - the depth-first renumbering at the end runs as tasks over large subtrees as well.
+// The output depends only on the input and the options, not on the number of threads.
 #include "accel/build_options.h"
 #include "accel/bvh.h"
+#include "accel/prim_partition.h"
+#include "accel/prim_ref.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -13,37 +22,39 @@
 
 namespace glint::accel::detail {
 
-// A contiguous range [begin, end) of Bvh::prim_indices and the boxes of what it holds.
-struct PrimRange {
-  uint32_t begin = 0;
-  uint32_t end = 0;
-  Aabb box;           // union of the primitive boxes
-  Aabb centroid_box;  // bounds of the centroids
-
-  uint32_t size() const { return end - begin; }
-};
-
-// Context handed to a split policy.
+// Context handed to a split policy. The range's references are in refs[range.begin, range.end);
+// other[range.begin, range.end) is free for a parallel partition to write the children into.
 struct SplitContext {
-  const BuildInput& input;
   const BuildOptions& options;
-  std::span<uint32_t> prim_indices;  // the whole permutation; a policy reorders only its range
-  bool parallel;                     // the range is large enough to use TBB inside the policy
+  std::span<PrimRef> refs;
+  std::span<PrimRef> other;
+  bool parallel;   // the range is large enough to use TBB inside the policy
+  uint32_t chunk;  // references per parallel work item
 };
 
-// A split policy reorders prim_indices[range] and returns the split point mid (begin < mid < end),
-// or nullopt to ask for a leaf. The skeleton makes a leaf only when the range fits in
-// max_leaf_size; otherwise (or when the policy's split would break the depth limit) it falls back to
-// object_median_split, which always succeeds.
-using SplitPolicy = std::optional<uint32_t> (*)(const SplitContext& context, const PrimRange& range);
+// References per parallel work item inside a node: options.parallel_threshold, clamped so that a
+// chunk's bookkeeping stays negligible and a small threshold (tests) still gives many chunks.
+uint32_t parallel_chunk(const BuildOptions& options);
 
-// Object median on the longest centroid axis; when all centroids coincide, splits the range in
-// half as it is (any order is as good as another).
-uint32_t object_median_split(const SplitContext& context, const PrimRange& range);
+// Splits the range by goes_left(ref) (references with it true first), in parallel into
+// context.other for large ranges, in place otherwise; both children's bounds come with it.
+template <typename GoesLeft>
+Split partition_range(const SplitContext& context, const PrimRange& range, GoesLeft&& goes_left) {
+  if (context.parallel && range.size() >= 2 * context.chunk)
+    return partition_parallel(context.refs, context.other, range, context.chunk, goes_left);
+  return partition_in_place(context.refs, range, goes_left);
+}
 
-// Union of boxes and of centroids over prim_indices[begin, end), in parallel when asked.
-PrimRange bound_range(const BuildInput& input, std::span<const uint32_t> prim_indices, uint32_t begin, uint32_t end,
-                      bool parallel);
+// A split policy splits the range (partition_range, or in place and bounded by itself) and returns
+// its children, or nullopt to ask for a leaf. The skeleton makes a leaf only when the range fits in
+// max_leaf_size; otherwise (or when the policy's split is empty on one side or would break the depth
+// limit) it falls back to object_median_split, which always succeeds.
+using SplitPolicy = std::optional<Split> (*)(const SplitContext& context, const PrimRange& range);
+
+// Object median on the longest centroid axis (ties broken by primitive index, so the halves do not
+// depend on the incoming order); when all centroids coincide, splits the range in half as it is.
+// In place; the children's bounds in parallel for large ranges.
+Split object_median_split(const SplitContext& context, const PrimRange& range);
 
 // Validates input and options (glint::Error on mismatch), runs the recursion, lays the nodes out in
 // a deterministic depth-first order (sibling pairs adjacent, children after parents) and times it.

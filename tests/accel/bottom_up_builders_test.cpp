@@ -86,9 +86,12 @@ TEST(KarrasTree, InOrderLeavesFollowTheSortedCodesEvenWithDuplicates) {
     for (const uint64_t distinct : {uint64_t{1}, uint64_t{5}, uint64_t{1} << 40}) {
       MortonOrder order;
       order.bits = 63;
-      for (uint32_t i = 0; i < count; ++i) order.codes.push_back(rng() % distinct);
+      order.codes = detail::ParallelArray<uint64_t>(count);
+      for (uint32_t i = 0; i < count; ++i) order.codes[i] = rng() % distinct;
       std::sort(order.codes.begin(), order.codes.end());
-      order.prims = iota_vector(count);
+      order.prims = detail::ParallelArray<uint32_t>(count);
+      const std::vector<uint32_t> identity = iota_vector(count);
+      std::copy(identity.begin(), identity.end(), order.prims.begin());
       const PrimitiveBounds bounds = unit_boxes_along_x(count);
       const BinaryTree tree = detail::build_karras_tree(bounds.input(), order);
       ASSERT_EQ(tree.nodes.size(), 2 * size_t{count} - 1);
@@ -96,10 +99,10 @@ TEST(KarrasTree, InOrderLeavesFollowTheSortedCodesEvenWithDuplicates) {
       // A radix tree over sorted keys lists its leaves in key order.
       EXPECT_EQ(checked_leaf_order(tree), iota_vector(count)) << count << " leaves, " << distinct << " codes";
       if (distinct == 1) {  // all codes equal: the index tie-break gives a balanced tree
-        const std::vector<detail::SubtreeSummary> summaries = detail::summarise_tree(tree, BuildOptions{});
+        const auto summaries = detail::summarise_tree(tree, BuildOptions{});
         BuildOptions single;
         single.max_leaf_size = 1;
-        const std::vector<detail::SubtreeSummary> no_collapse = detail::summarise_tree(tree, single);
+        const auto no_collapse = detail::summarise_tree(tree, single);
         EXPECT_EQ(no_collapse[tree.root].height, 1u + static_cast<uint32_t>(std::bit_width(count - 1)));
       }
     }

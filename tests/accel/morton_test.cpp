@@ -89,7 +89,7 @@ TEST(Morton, SixtyThreeBitsSeparateWhatThirtyBitsCannot) {
 TEST(Morton, FlatAxesAndBadCentroids) {
   const std::vector<vec3> flat{vec3(3.0f, 1.0f, 2.0f), vec3(1.0f, 1.0f, 2.0f), vec3(2.0f, 1.0f, 2.0f)};
   const MortonOrder order = sort_by_morton(flat);
-  EXPECT_EQ(order.prims, (std::vector<uint32_t>{1, 2, 0}));
+  EXPECT_EQ(std::vector<uint32_t>(order.prims.begin(), order.prims.end()), (std::vector<uint32_t>{1, 2, 0}));
   std::vector<vec3> bad = flat;
   bad[1].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(sort_by_morton(bad), Error);

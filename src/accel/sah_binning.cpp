@@ -1,0 +1,203 @@
+#include "accel/sah_binning.h"
+
+#include "accel/primitive_bounds.h"
+#include "accel/ray.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <emmintrin.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace glint::accel::detail {
+namespace {
+
+// Per reference: the three bin indices in one SSE computation, then per axis one min and one max on
+// the bin's rows. Operation for operation what BinMapping::bin and glm::min/max compute:
+// _mm_min_ps(a, b) is (a < b ? a : b) and glm::min(x, y) is (y < x ? y : x), so glm::min(bin, ref) ==
+// _mm_min_ps(ref, bin) bit for bit (signed zeros included), and likewise for max.
+void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, const BinMapping& mapping,
+                SahBins& bins) {
+  const uint32_t bin_count = mapping.bin_count;
+  const __m128 origin = _mm_setr_ps(mapping.origin.x, mapping.origin.y, mapping.origin.z, 0.0f);
+  const __m128 scale = _mm_setr_ps(mapping.scale.x, mapping.scale.y, mapping.scale.z, 0.0f);
+  const __m128 last_bin = _mm_set1_ps(static_cast<float>(bin_count - 1));
+  const __m128 zero = _mm_setzero_ps();
+  float* const mins = bins.box_min[0].data();
+  float* const maxs = bins.box_max[0].data();
+  uint32_t* const counts = bins.counts.data();
+  alignas(16) int32_t bin[4];
+  for (uint32_t i = begin; i != end; ++i) {
+    const PrimRef& ref = refs[i];
+    const __m128 position = _mm_mul_ps(_mm_sub_ps(_mm_setr_ps(ref.centroid.x, ref.centroid.y, ref.centroid.z, 0.0f), origin), scale);
+    // max(position, 0) maps NaN and everything not above 0 to bin 0, min() the top to the last bin,
+    // and truncation does the rest, as in BinMapping::bin.
+    _mm_store_si128(reinterpret_cast<__m128i*>(bin), _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, zero), last_bin)));
+    const __m128 lo = _mm_loadu_ps(&ref.box_min.x);  // lane 3: the index bits, never read back
+    const __m128 hi = _mm_loadu_ps(&ref.box_max.x);  // lane 3: centroid.x, likewise
+    for (int axis = 0; axis < 3; ++axis) {
+      const uint32_t slot = static_cast<uint32_t>(axis) * bin_count + static_cast<uint32_t>(bin[axis]);
+      _mm_storeu_ps(mins + 4 * slot, _mm_min_ps(lo, _mm_loadu_ps(mins + 4 * slot)));
+      _mm_storeu_ps(maxs + 4 * slot, _mm_max_ps(hi, _mm_loadu_ps(maxs + 4 * slot)));
+      ++counts[slot];
+    }
+  }
+}
+
+// tbb::parallel_reduce body: a body is split off only when a thread steals work, so bins are
+// cleared and merged once per stolen range, not once per chunk. The first body bins straight into
+// the caller's bins (no 21 KB copy at the end); split-off bodies bin into their own.
+struct BinReduction {
+  std::span<const PrimRef> refs;
+  const BinMapping& mapping;
+  SahBins own;
+  SahBins* bins;
+
+  BinReduction(std::span<const PrimRef> r, const BinMapping& m, SahBins& out) : refs(r), mapping(m), bins(&out) {
+    bins->clear(m.bin_count);
+  }
+  BinReduction(BinReduction& other, tbb::split) : refs(other.refs), mapping(other.mapping), bins(&own) {
+    own.clear(mapping.bin_count);
+  }
+  BinReduction(const BinReduction&) = delete;
+  BinReduction& operator=(const BinReduction&) = delete;
+  void operator()(const tbb::blocked_range<uint32_t>& r) { bin_serial(refs, r.begin(), r.end(), mapping, *bins); }
+  void join(const BinReduction& other) { bins->add(*other.bins); }
+};
+
+}  // namespace
+
+std::optional<BinMapping> bin_mapping(const Aabb& centroid_box, uint32_t bin_count) {
+  const vec3 extent = centroid_box.extent();
+  BinMapping mapping{centroid_box.min, vec3(0.0f), bin_count};
+  for (int axis = 0; axis < 3; ++axis)
+    if (extent[axis] > 0.0f) {
+      const float scale = static_cast<float>(bin_count) / extent[axis];
+      if (scale < kInfinity) mapping.scale[axis] = scale;  // a subnormal extent is as good as none
+    }
+  if (mapping.scale == vec3(0.0f)) return std::nullopt;
+  return mapping;
+}
+
+void SahBins::clear(uint32_t count) {
+  bin_count = count;
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (uint32_t i = 0; i < 3 * count; ++i) {
+    box_min[i] = {inf, inf, inf, inf};
+    box_max[i] = {-inf, -inf, -inf, -inf};
+    counts[i] = 0;
+  }
+}
+
+void SahBins::add(const SahBins& other) {
+  for (uint32_t i = 0; i < 3 * bin_count; ++i) {
+    for (int axis = 0; axis < 3; ++axis) {
+      box_min[i][axis] = std::min(box_min[i][axis], other.box_min[i][axis]);
+      box_max[i][axis] = std::max(box_max[i][axis], other.box_max[i][axis]);
+    }
+    counts[i] += other.counts[i];
+  }
+}
+
+bool SahBins::operator==(const SahBins& other) const {
+  if (bin_count != other.bin_count) return false;
+  for (int axis = 0; axis < 3; ++axis)
+    for (uint32_t b = 0; b < bin_count; ++b)
+      if (count(axis, b) != other.count(axis, b) || box(axis, b).min != other.box(axis, b).min ||
+          box(axis, b).max != other.box(axis, b).max)
+        return false;
+  return true;
+}
+
+void bin_refs(std::span<const PrimRef> refs, const PrimRange& range, const BinMapping& mapping, bool parallel,
+              uint32_t chunk, SahBins& bins) {
+  if (!parallel || range.size() <= chunk) {
+    bins.clear(mapping.bin_count);
+    bin_serial(refs, range.begin, range.end, mapping, bins);
+    return;
+  }
+  BinReduction reduction(refs, mapping, bins);
+  tbb::parallel_reduce(tbb::blocked_range<uint32_t>(range.begin, range.end, chunk), reduction);
+}
+
+std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& mapping, uint32_t count) {
+  // Sweep right to left for the area and count right of each boundary, then left to right to
+  // evaluate A_left * N_left + A_right * N_right at every boundary b (bins [0, b) go left).
+  // An empty bin changes neither side, so its box is not merged and, on the left sweep, a boundary
+  // right after it is skipped: it splits the primitives exactly as the boundary before it, at the
+  // same cost, and the earlier boundary wins ties anyway. Small nodes, with most bins empty, are
+  // the majority, and this skips most of their sweep without changing any result.
+  const uint32_t bin_count = mapping.bin_count;
+  std::array<float, kMaxSahBins> right_cost;
+  std::optional<SahSplit> best;
+  float best_cost = std::numeric_limits<float>::infinity();  // an infinite or NaN cost never wins
+  for (int axis = 0; axis < 3; ++axis) {
+    if (mapping.scale[axis] == 0.0f) continue;
+    Aabb right;
+    uint32_t right_count = 0;
+    float cost_right = 0.0f;
+    for (uint32_t b = bin_count - 1; b > 0; --b) {
+      if (bins.count(axis, b) != 0) {
+        right.extend(bins.box(axis, b));
+        right_count += bins.count(axis, b);
+        cost_right = half_area(right) * static_cast<float>(right_count);
+      }
+      right_cost[b] = cost_right;
+    }
+    Aabb left;
+    uint32_t left_count = 0;
+    for (uint32_t b = 1; b < bin_count; ++b) {
+      if (bins.count(axis, b - 1) == 0) continue;
+      left.extend(bins.box(axis, b - 1));
+      left_count += bins.count(axis, b - 1);
+      if (left_count == count) break;  // everything is left from here on
+      const float cost = half_area(left) * static_cast<float>(left_count) + right_cost[b];
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = SahSplit{axis, b, cost};
+      }
+    }
+  }
+  return best;
+}
+
+std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, const PrimRange& range,
+                                             const BinMapping& mapping) {
+  const uint32_t count = range.size();
+  std::array<uint32_t, kSmallSahRange> bin_of;      // bin of references[i] on the current axis
+  std::array<uint32_t, kSmallSahRange> order;       // reference indices sorted by bin
+  std::array<float, kSmallSahRange> right_cost_at;  // cost of order[i..] when order[i] starts a bin
+  std::optional<SahSplit> best;
+  float best_cost = std::numeric_limits<float>::infinity();
+  const PrimRef* first = refs.data() + range.begin;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (mapping.scale[axis] == 0.0f) continue;
+    for (uint32_t i = 0; i < count; ++i) {
+      bin_of[i] = mapping.bin(first[i].centroid, axis);
+      order[i] = i;
+      for (uint32_t j = i; j > 0 && bin_of[order[j - 1]] > bin_of[order[j]]; --j) std::swap(order[j - 1], order[j]);
+    }
+    Aabb right;
+    for (uint32_t i = count; i-- > 0;) {
+      right.extend(first[order[i]].box());
+      if (i == 0 || bin_of[order[i - 1]] != bin_of[order[i]])
+        right_cost_at[i] = half_area(right) * static_cast<float>(count - i);
+    }
+    Aabb left;
+    for (uint32_t i = 0; i + 1 < count; ++i) {
+      left.extend(first[order[i]].box());
+      const uint32_t bin = bin_of[order[i]];
+      if (bin == bin_of[order[i + 1]]) continue;  // not the last reference of its bin
+      const float cost = half_area(left) * static_cast<float>(i + 1) + right_cost_at[i + 1];
+      if (cost < best_cost) {
+        best_cost = cost;
+        best = SahSplit{axis, bin + 1, cost};
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace glint::accel::detail
