@@ -1,6 +1,7 @@
 #include "accel/build_lbvh.h"
 
 #include "accel/bvh_collapse_leaves.h"
+#include "accel/radix_tree_split.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -29,31 +30,13 @@ struct CommonPrefix {
   }
 };
 
-// The paper's Figure 4 for interior node i: which end of its range it sits at (d), the other end
-// (j) by exponential then binary search, and the split (gamma) by binary search.
+// One interior node of the radix tree (accel/radix_tree_split.h, shared with the GPU LBVH).
 void build_interior(BinaryTree& tree, const CommonPrefix& delta, int64_t i) {
-  const int d = delta(i, i + 1) > delta(i, i - 1) ? 1 : -1;
-  const int delta_min = delta(i, i - d);
-  int64_t length_max = 2;
-  while (delta(i, i + length_max * d) > delta_min) length_max *= 2;
-  int64_t length = 0;
-  for (int64_t step = length_max / 2; step >= 1; step /= 2)
-    if (delta(i, i + (length + step) * d) > delta_min) length += step;
-  const int64_t j = i + length * d;
-
-  const int delta_node = delta(i, j);
-  int64_t split = 0;
-  int64_t step = length;
-  do {
-    step = (step + 1) / 2;
-    if (delta(i, i + (split + step) * d) > delta_node) split += step;
-  } while (step > 1);
-  const int64_t gamma = i + split * d + std::min(d, 0);
-
+  const RadixTreeNode range = radix_tree_node(delta, i);
   const auto leaves = static_cast<int64_t>(tree.leaf_count);
   const auto node = static_cast<uint32_t>(leaves + i);
-  const auto left = static_cast<uint32_t>(std::min(i, j) == gamma ? gamma : leaves + gamma);
-  const auto right = static_cast<uint32_t>(std::max(i, j) == gamma + 1 ? gamma + 1 : leaves + gamma + 1);
+  const auto left = static_cast<uint32_t>(range.left_child(leaves));
+  const auto right = static_cast<uint32_t>(range.right_child(leaves));
   tree.nodes[node].left = left;
   tree.nodes[node].right = right;
   // Every node has exactly one parent, so these writes never race.

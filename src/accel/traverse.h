@@ -65,22 +65,30 @@ GLINT_HOST_DEVICE bool traverse_bvh(const BvhView& bvh, const vec3& origin, cons
   }
 }
 
+// The closest-hit step at one triangle, shared by every BVH traversal (CPU, GPU): when triangle
+// `prim` is hit within [t_min, t_limit] and closer than the current hit, records it in `hit` (t, prim,
+// u, v), lowers t_limit and returns true. Equal t keeps the first one found (ties on shared edges may
+// go either way).
+GLINT_HOST_DEVICE inline bool record_closer_hit(const WatertightRay& ray, const TriangleMesh& mesh, uint32_t prim,
+                                                float t_min, float& t_limit, Hit& hit) {
+  TriangleHit tri_hit;
+  if (!intersect_triangle(ray, mesh.triangle(prim), t_min, t_limit, tri_hit)) return false;
+  if (tri_hit.t == t_limit && hit.valid()) return false;
+  t_limit = tri_hit.t;
+  hit.t = tri_hit.t;
+  hit.prim = prim;
+  hit.u = tri_hit.u;
+  hit.v = tri_hit.v;
+  return true;
+}
+
 // Closest hit against one triangle mesh. Updates `hit` (t, prim, u, v; instance untouched) only
 // when something closer than ray_t_max is found; returns whether it was.
 GLINT_HOST_DEVICE inline bool intersect_closest(const BvhView& bvh, const TriangleMesh& mesh, const vec3& origin,
                                                 const vec3& direction, float t_min, float& t_max, Hit& hit) {
   const WatertightRay ray = make_watertight_ray(origin, direction);
   return traverse_bvh<false>(bvh, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
-    TriangleHit tri_hit;
-    if (!intersect_triangle(ray, mesh.triangle(prim), t_min, t_limit, tri_hit)) return false;
-    // Equal t: keep the first one found (ties on shared edges may go either way).
-    if (tri_hit.t == t_limit && hit.valid()) return false;
-    t_limit = tri_hit.t;
-    hit.t = tri_hit.t;
-    hit.prim = prim;
-    hit.u = tri_hit.u;
-    hit.v = tri_hit.v;
-    return true;
+    return record_closer_hit(ray, mesh, prim, t_min, t_limit, hit);
   });
 }
 

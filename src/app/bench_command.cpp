@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress_bar.h"
+#include "core/utc_timestamp.h"
 #include "gl/egl_context.h"
 #include "scene/load_scene.h"
 
@@ -55,14 +56,6 @@ std::string joined(const std::vector<std::string>& items) {
   return text;
 }
 
-std::string utc_timestamp() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 void check_options(const BenchOptions& options) {
   bool known = false;

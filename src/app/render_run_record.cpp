@@ -1,6 +1,7 @@
 #include "app/render_run_record.h"
 
 #include "core/atomic_file.h"
+#include "core/utc_timestamp.h"
 #include "render/frame_pipeline.h"
 
 #include <chrono>
@@ -9,14 +10,6 @@
 namespace glint {
 namespace {
 
-std::string utc_timestamp() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
 
 nlohmann::json scene_summary(const Scene& scene) {
   return {{"name", scene.name},

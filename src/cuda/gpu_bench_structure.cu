@@ -1,6 +1,7 @@
 #include "cuda/gpu_bench_structure.h"
 
 #include "cuda/cuda_check.h"
+#include "cuda/cuda_stream_events.h"
 #include "cuda/device_query.h"
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_mesh.h"
@@ -16,8 +17,6 @@ struct GpuBenchStructure::State {
   accel::BvhBuilder builder = accel::BvhBuilder::sah;
   accel::BuildOptions options;
   std::optional<GpuBvhBuild> gpu_builder;  // lbvh, ploc
-  cudaStream_t stream = nullptr;
-  cudaEvent_t start = nullptr, stop = nullptr;
   GpuMesh mesh;
   DeviceBuffer<Aabb> boxes;
   GpuBvh bvh;
@@ -26,36 +25,24 @@ struct GpuBenchStructure::State {
   DeviceBuffer<accel::Hit> hits;
   DeviceBuffer<uint32_t> overflow;
   bool built = false;
+  CudaEvent start, stop;
+  // Last, so it is destroyed first: its destructor waits for the work still using the buffers above.
+  CudaStream stream{cudaStreamNonBlocking};
 
-  ~State() {
-    if (stream) cudaStreamSynchronize(stream);
-    if (start) cudaEventDestroy(start);
-    if (stop) cudaEventDestroy(stop);
-    if (stream) cudaStreamDestroy(stream);
-  }
-
-  double elapsed_ms() {
-    GLINT_CUDA_CHECK(cudaEventSynchronize(stop));
-    float ms = 0.0f;
-    GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, start, stop));
-    return ms;
-  }
+  double elapsed() const { return elapsed_ms(start, stop); }
   void require_built(const char* what) const {
     if (!built) fail_message(std::string("accel-bench cuda: ") + what + " before build");
   }
 };
 
+// The GPU check comes before State: its CUDA events and stream need a GPU.
 GpuBenchStructure::GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options)
-    : state_(std::make_unique<State>()) {
-  require_cuda_gpu("accel-bench --backend cuda");
+    : state_((require_cuda_gpu("accel-bench --backend cuda"), std::make_unique<State>())) {
   State& s = *state_;
   s.builder = builder;
   s.options = options;
   if (builder == accel::BvhBuilder::lbvh) s.gpu_builder.emplace(GpuBvhBuilder::lbvh, options);
   if (builder == accel::BvhBuilder::ploc) s.gpu_builder.emplace(GpuBvhBuilder::ploc, options);
-  GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&s.stream, cudaStreamNonBlocking));
-  GLINT_CUDA_CHECK(cudaEventCreate(&s.start));
-  GLINT_CUDA_CHECK(cudaEventCreate(&s.stop));
   s.overflow.resize(1);
 }
 
@@ -63,22 +50,22 @@ GpuBenchStructure::~GpuBenchStructure() = default;
 
 double GpuBenchStructure::build(const accel::TriangleMesh& mesh) {
   State& s = *state_;
-  s.mesh.upload(mesh, s.stream);
+  s.mesh.upload(mesh, s.stream.get());
   if (s.gpu_builder) {
-    GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
+    s.start.record(s.stream.get());
     s.boxes.resize(mesh.triangle_count);
-    compute_triangle_boxes(s.mesh.view(), s.boxes.data(), s.stream);
-    s.gpu_builder->build(s.boxes.data(), mesh.triangle_count, s.bvh, s.stream);
-    GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
+    compute_triangle_boxes(s.mesh.view(), s.boxes.data(), s.stream.get());
+    s.gpu_builder->build(s.boxes.data(), mesh.triangle_count, s.bvh, s.stream.get());
+    s.stop.record(s.stream.get());
     s.built = true;
-    return s.elapsed_ms();
+    return s.elapsed();
   }
   const accel::Bvh host_bvh = accel::build_bvh(s.builder, mesh, s.options);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
-  s.bvh.upload(host_bvh, s.stream);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
+  s.start.record(s.stream.get());
+  s.bvh.upload(host_bvh, s.stream.get());
+  s.stop.record(s.stream.get());
   s.built = true;
-  return host_bvh.build_ms + s.elapsed_ms();
+  return host_bvh.build_ms + s.elapsed();
 }
 
 std::optional<double> GpuBenchStructure::refit(const accel::TriangleMesh& mesh) {
@@ -88,13 +75,13 @@ std::optional<double> GpuBenchStructure::refit(const accel::TriangleMesh& mesh) 
   if (mesh.triangle_count != s.mesh.triangle_count())
     fail_message("accel-bench cuda: refit with " + std::to_string(mesh.triangle_count) + " triangles, built with " +
                  std::to_string(s.mesh.triangle_count()));
-  s.mesh.upload(mesh, s.stream);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
+  s.mesh.upload(mesh, s.stream.get());
+  s.start.record(s.stream.get());
   s.boxes.resize(mesh.triangle_count);
-  compute_triangle_boxes(s.mesh.view(), s.boxes.data(), s.stream);
-  refit_gpu(s.bvh, s.boxes.data(), s.refit_counters, s.stream);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
-  return s.elapsed_ms();
+  compute_triangle_boxes(s.mesh.view(), s.boxes.data(), s.stream.get());
+  refit_gpu(s.bvh, s.boxes.data(), s.refit_counters, s.stream.get());
+  s.stop.record(s.stream.get());
+  return s.elapsed();
 }
 
 double GpuBenchStructure::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
@@ -105,30 +92,31 @@ double GpuBenchStructure::trace_closest(std::span<const accel::Ray> rays, std::s
                  " hits");
   if (rays.empty()) return 0.0;
   if (rays.size() > 0xFFFFFFFFu) fail_message("accel-bench cuda: more than 2^32 - 1 rays in one call");
-  s.rays.upload(rays, s.stream);
+  s.rays.upload(rays, s.stream.get());
   s.hits.resize(rays.size());
-  s.overflow.fill_zero(s.stream);
+  s.overflow.fill_zero(s.stream.get());
   const accel::Blas blas{s.bvh.view(), s.mesh.view()};
-  GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
+  s.start.record(s.stream.get());
   launch_trace_closest(blas, s.rays.data(), s.hits.data(), nullptr, static_cast<uint32_t>(rays.size()),
-                       s.overflow.data(), s.stream);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
+                       s.overflow.data(), s.stream.get());
+  s.stop.record(s.stream.get());
   uint32_t overflowed = 0;
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(hits.data(), s.hits.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, s.stream));
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, s.overflow.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, s.stream));
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream));
+  GLINT_CUDA_CHECK(
+      cudaMemcpyAsync(hits.data(), s.hits.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, s.stream.get()));
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, s.overflow.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, s.stream.get()));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
   if (overflowed)
     fail_message("accel-bench cuda: a traversal stack overflowed (" + std::string(accel::builder_name(s.builder)) +
                  " BVH deeper than " + std::to_string(accel::kMaxBvhDepth) + " levels)");
-  return s.elapsed_ms();
+  return s.elapsed();
 }
 
 accel::Bvh GpuBenchStructure::download() const {
   State& s = *state_;
   s.require_built("download");
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
   accel::Bvh bvh = s.bvh.download(accel::builder_name(s.builder).data());
-  bvh.depth = measure_depth(s.bvh, s.stream);
+  bvh.depth = measure_depth(s.bvh, s.stream.get());
   return bvh;
 }
 

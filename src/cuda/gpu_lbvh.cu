@@ -1,5 +1,7 @@
 #include "cuda/gpu_lbvh.cuh"
 
+#include "accel/radix_tree_split.h"
+
 namespace glint::cuda::detail {
 namespace {
 
@@ -18,41 +20,24 @@ struct KeyPrefix {
   }
 };
 
-// The paper's Figure 4 for interior node i (one thread each, i in [0, count - 1)): which end of its
-// key range it sits at (d), the other end (j) by exponential then binary search, and the split
-// (gamma) by binary search. Interior node i is tree node count + i; the root is interior 0. Each
-// node has one parent, so the parent writes never race. Subtree sizes follow from the key range.
+// The paper's Figure 4 for interior node i (one thread each, i in [0, count - 1); the search is
+// accel/radix_tree_split.h, shared with the CPU LBVH). Interior node i is tree node count + i; the
+// root is interior 0. Each node has one parent, so the parent writes never race. Subtree sizes follow
+// from the key range.
 __global__ void radix_tree_kernel(KeyPrefix delta, uint32_t leaf_count, uint2* children, uint32_t* parents,
                                   uint32_t* sizes) {
   const uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
   if (thread + 1 >= leaf_count) return;
   const int64_t i = thread;
-  const int d = delta(i, i + 1) > delta(i, i - 1) ? 1 : -1;
-  const int delta_min = delta(i, i - d);
-  int64_t length_max = 2;
-  while (delta(i, i + length_max * d) > delta_min) length_max *= 2;
-  int64_t length = 0;
-  for (int64_t step = length_max / 2; step >= 1; step /= 2)
-    if (delta(i, i + (length + step) * d) > delta_min) length += step;
-  const int64_t j = i + length * d;
-
-  const int delta_node = delta(i, j);
-  int64_t split = 0;
-  int64_t step = length;
-  do {
-    step = (step + 1) / 2;
-    if (delta(i, i + (split + step) * d) > delta_node) split += step;
-  } while (step > 1);
-  const int64_t gamma = i + split * d + (d < 0 ? -1 : 0);
-
+  const accel::RadixTreeNode range = accel::radix_tree_node(delta, i);
   const int64_t leaves = leaf_count;
   const auto node = static_cast<uint32_t>(leaves + i);
-  const auto left = static_cast<uint32_t>((i < j ? i : j) == gamma ? gamma : leaves + gamma);
-  const auto right = static_cast<uint32_t>((i > j ? i : j) == gamma + 1 ? gamma + 1 : leaves + gamma + 1);
+  const auto left = static_cast<uint32_t>(range.left_child(leaves));
+  const auto right = static_cast<uint32_t>(range.right_child(leaves));
   children[i] = make_uint2(left, right);
   parents[left] = node;
   parents[right] = node;
-  sizes[node] = static_cast<uint32_t>(2 * (length + 1) - 1);
+  sizes[node] = static_cast<uint32_t>(2 * (range.last - range.first + 1) - 1);
 }
 
 // One thread per leaf: its box, then up the tree. The first thread to arrive at a node stops (the

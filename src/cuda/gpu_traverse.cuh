@@ -13,6 +13,7 @@
 #include "accel/intersect_triangle.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
+#include "accel/traverse.h"
 
 #include <cstdint>
 
@@ -89,20 +90,12 @@ __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& o
 }
 
 // Closest hit in one BLAS (object space). Updates `hit` (t, prim, u, v) when something closer than
-// t_max is found, with accel::intersect_closest's tie rule (equal t: the first found stays).
+// t_max is found, with the CPU traversal's step and tie rule (accel::record_closer_hit).
 __device__ inline bool gpu_intersect_closest(const accel::Blas& blas, const vec3& origin, const vec3& direction,
                                              float t_min, float& t_max, accel::Hit& hit, bool& overflow) {
   const accel::WatertightRay ray = accel::make_watertight_ray(origin, direction);
   return gpu_traverse_bvh(blas.bvh, origin, direction, t_min, t_max, overflow, [&](uint32_t prim, float& t_limit) {
-    accel::TriangleHit tri_hit;
-    if (!accel::intersect_triangle(ray, blas.mesh.triangle(prim), t_min, t_limit, tri_hit)) return false;
-    if (tri_hit.t == t_limit && hit.valid()) return false;
-    t_limit = tri_hit.t;
-    hit.t = tri_hit.t;
-    hit.prim = prim;
-    hit.u = tri_hit.u;
-    hit.v = tri_hit.v;
-    return true;
+    return accel::record_closer_hit(ray, blas.mesh, prim, t_min, t_limit, hit);
   });
 }
 

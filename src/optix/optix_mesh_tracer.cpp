@@ -1,7 +1,7 @@
 #include "optix/optix_mesh_tracer.h"
 
 #include "core/error.h"
-#include "optix/cuda_stream_events.h"
+#include "cuda/cuda_stream_events.h"
 #include "optix/optix_device_context.h"
 #include "optix/optix_host_trace.h"
 #include "optix/optix_trace_pipeline.h"
@@ -34,7 +34,7 @@ struct OptixMeshTracer::State {
 
   DeviceContext context;
   TraceClosestPipeline pipeline{context.get(), context.validation()};
-  CudaStream stream;
+  cuda::CudaStream stream;
   rt::OptixBuildPreference preference;
   TriangleGas gas;
   cuda::DeviceBuffer<std::byte> scratch;

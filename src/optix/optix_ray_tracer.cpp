@@ -1,7 +1,7 @@
 #include "optix/optix_ray_tracer.h"
 
 #include "core/error.h"
-#include "optix/cuda_stream_events.h"
+#include "cuda/cuda_stream_events.h"
 #include "optix/optix_check.h"
 #include "optix/optix_device_context.h"
 #include "optix/optix_host_trace.h"
@@ -39,8 +39,8 @@ unsigned int ias_build_flags(rt::OptixBuildPreference preference) {
 struct OptixRayTracer::State {
   DeviceContext context;
   TraceClosestPipeline pipeline{context.get(), context.validation()};
-  CudaStream stream;
-  CudaEvent update_start, update_end, trace_start, trace_end;
+  cuda::CudaStream stream;
+  cuda::CudaEvent update_start, update_end, trace_start, trace_end;
 
   rt::OptixBuildPreference preference = rt::OptixBuildPreference::fast_trace;
   std::vector<MeshStructure> meshes;
@@ -185,7 +185,7 @@ rt::RayTracerStats OptixRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = s.build_ms;
-  stats.last_update_ms = s.update_recorded ? elapsed_ms(s.update_start, s.update_end) : 0.0;
+  stats.last_update_ms = s.update_recorded ? cuda::elapsed_ms(s.update_start, s.update_end) : 0.0;
   stats.rebuilds = s.rebuilds;
   stats.refits = s.refits;
   std::uint64_t bytes = s.ias.bytes();
@@ -214,13 +214,13 @@ void OptixRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hi
 
 double OptixRayTracer::last_trace_ms() {
   State& s = *state_;
-  return s.trace_recorded ? elapsed_ms(s.trace_start, s.trace_end) : 0.0;
+  return s.trace_recorded ? cuda::elapsed_ms(s.trace_start, s.trace_end) : 0.0;
 }
 
 std::optional<double> OptixRayTracer::last_update_ms() {
   State& s = *state_;
   if (!s.update_recorded) return std::nullopt;
-  return elapsed_ms(s.update_start, s.update_end);
+  return cuda::elapsed_ms(s.update_start, s.update_end);
 }
 
 vec3* OptixRayTracer::device_positions(uint32_t mesh) {

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/utc_timestamp.h"
 
 #include <chrono>
 #include <ctime>
@@ -28,18 +29,10 @@ std::string cpu_model() {
   return "unknown";
 }
 
-std::string utc_now() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
-}
 
 }  // namespace
 
-MachineInfo current_machine(int threads) { return {cpu_model(), threads, utc_now()}; }
+MachineInfo current_machine(int threads) { return {cpu_model(), threads, utc_timestamp()}; }
 
 nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine) {
   nlohmann::json j;

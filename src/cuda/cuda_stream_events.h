@@ -1,17 +1,24 @@
 #pragma once
-// Owning CUDA stream and event handles for the optix backend (created checked, destroyed unchecked
-// in destructors), and the GPU time between two recorded events. CUDA runtime header: include it
-// from src/optix/ only.
+// Owning CUDA stream and event handles (created checked, destroyed unchecked in destructors), and the
+// GPU time between two recorded events: what the cuda and optix backends and accel-bench's GPU rows
+// time their work with. CUDA runtime header: include it from .cu files and src/optix/ only.
 #include "cuda/cuda_check.h"
 
 #include <cuda_runtime.h>
 
-namespace glint::optix {
+namespace glint::cuda {
 
 class CudaStream {
 public:
-  CudaStream() { GLINT_CUDA_CHECK(cudaStreamCreate(&stream_)); }
-  ~CudaStream() { cudaStreamDestroy(stream_); }
+  // cudaStreamNonBlocking: the stream does not wait for the legacy default stream (callers that
+  // copy on it synchronise themselves).
+  explicit CudaStream(unsigned int flags = cudaStreamDefault) {
+    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, flags));
+  }
+  ~CudaStream() {
+    cudaStreamSynchronize(stream_);  // work still queued may use buffers freed after the stream
+    cudaStreamDestroy(stream_);
+  }
   CudaStream(const CudaStream&) = delete;
   CudaStream& operator=(const CudaStream&) = delete;
   cudaStream_t get() const { return stream_; }
@@ -41,4 +48,4 @@ inline double elapsed_ms(const CudaEvent& start, const CudaEvent& end) {
   return static_cast<double>(ms);
 }
 
-}  // namespace glint::optix
+}  // namespace glint::cuda
