@@ -143,6 +143,10 @@ private:
     return {tlas_.view(), instances_.data(), blas_views_.data()};
   }
   void check_overflow() const;
+  TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                           uint32_t capacity) const {
+    return {rays, hits, ray_count, capacity, overflow_.data(), next_ray_.data(), options_.cuda_trace_kernel};
+  }
 
   cudaStream_t stream_ = nullptr;
   rt::AccelOptions options_;
@@ -168,6 +172,7 @@ private:
   mutable DeviceBuffer<accel::Ray> host_rays_;
   mutable DeviceBuffer<accel::Hit> host_hits_;
   mutable DeviceBuffer<uint32_t> overflow_;
+  mutable DeviceBuffer<uint32_t> next_ray_;  // the persistent kernel's ray counter
   mutable EventTimer trace_timer_;
   mutable EventTimer update_timer_;
 
@@ -274,6 +279,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
   tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_);
   overflow_.resize(1);
+  next_ray_.resize(1);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
   build_ms_ = ms_since(start);
   rebuilds_ = refits_ = 0;
@@ -376,7 +382,7 @@ void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<ac
   host_hits_.resize(count);
   overflow_.fill_zero(stream_);
   trace_timer_.start(stream_);
-  launch_trace_closest(tlas_view(), host_rays_.data(), host_hits_.data(), nullptr, count, overflow_.data(), stream_);
+  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, count), stream_);
   trace_timer_.stop(stream_);
   GLINT_CUDA_CHECK(
       cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_));
@@ -388,7 +394,7 @@ void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hit
   require_built("trace_closest_device()");
   overflow_.fill_zero(stream_);
   trace_timer_.start(stream_);
-  launch_trace_closest(tlas_view(), rays, hits, ray_count, capacity, overflow_.data(), stream_);
+  launch_trace_closest(tlas_view(), trace_launch(rays, hits, ray_count, capacity), stream_);
   trace_timer_.stop(stream_);
 }
 

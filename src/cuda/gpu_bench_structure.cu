@@ -24,6 +24,8 @@ struct GpuBenchStructure::State {
   DeviceBuffer<accel::Ray> rays;
   DeviceBuffer<accel::Hit> hits;
   DeviceBuffer<uint32_t> overflow;
+  DeviceBuffer<uint32_t> next_ray;  // the persistent kernel's ray counter
+  TraceKernel kernel = kDefaultTraceKernel;
   bool built = false;
   CudaEvent start, stop;
   // Last, so it is destroyed first: its destructor waits for the work still using the buffers above.
@@ -36,14 +38,17 @@ struct GpuBenchStructure::State {
 };
 
 // The GPU check comes before State: its CUDA events and stream need a GPU.
-GpuBenchStructure::GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options)
+GpuBenchStructure::GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options,
+                                     TraceKernel kernel)
     : state_((require_cuda_gpu("accel-bench --backend cuda"), std::make_unique<State>())) {
   State& s = *state_;
   s.builder = builder;
   s.options = options;
+  s.kernel = kernel;
   if (builder == accel::BvhBuilder::lbvh) s.gpu_builder.emplace(GpuBvhBuilder::lbvh, options);
   if (builder == accel::BvhBuilder::ploc) s.gpu_builder.emplace(GpuBvhBuilder::ploc, options);
   s.overflow.resize(1);
+  s.next_ray.resize(1);
 }
 
 GpuBenchStructure::~GpuBenchStructure() = default;
@@ -97,8 +102,10 @@ double GpuBenchStructure::trace_closest(std::span<const accel::Ray> rays, std::s
   s.overflow.fill_zero(s.stream.get());
   const accel::Blas blas{s.bvh.view(), s.mesh.view()};
   s.start.record(s.stream.get());
-  launch_trace_closest(blas, s.rays.data(), s.hits.data(), nullptr, static_cast<uint32_t>(rays.size()),
-                       s.overflow.data(), s.stream.get());
+  launch_trace_closest(blas,
+                       {s.rays.data(), s.hits.data(), nullptr, static_cast<uint32_t>(rays.size()), s.overflow.data(),
+                        s.next_ray.data(), s.kernel},
+                       s.stream.get());
   s.stop.record(s.stream.get());
   uint32_t overflowed = 0;
   GLINT_CUDA_CHECK(

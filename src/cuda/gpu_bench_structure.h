@@ -15,6 +15,7 @@
 #include "accel/bvh.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
+#include "cuda/trace_kernel.h"
 
 #include <memory>
 #include <optional>
@@ -24,7 +25,9 @@ namespace glint::cuda {
 
 class GpuBenchStructure {
 public:
-  explicit GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options = {});
+  // `kernel`: which closest-hit kernel traces (cuda/trace_kernel.h).
+  explicit GpuBenchStructure(accel::BvhBuilder builder, const accel::BuildOptions& options = {},
+                             TraceKernel kernel = kDefaultTraceKernel);
   ~GpuBenchStructure();
   GpuBenchStructure(const GpuBenchStructure&) = delete;
   GpuBenchStructure& operator=(const GpuBenchStructure&) = delete;

@@ -8,7 +8,7 @@ namespace glint::cuda {
 
 struct GpuBenchStructure::State {};
 
-GpuBenchStructure::GpuBenchStructure(accel::BvhBuilder, const accel::BuildOptions&) {
+GpuBenchStructure::GpuBenchStructure(accel::BvhBuilder, const accel::BuildOptions&, TraceKernel) {
   fail("accel-bench --backend cuda: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");
 }
 GpuBenchStructure::~GpuBenchStructure() = default;

@@ -1,16 +1,18 @@
 #include "cuda/gpu_trace.h"
 
-#include "cuda/cuda_check.h"
 #include "accel/kdtree_traverse.h"
+#include "cuda/cuda_check.h"
 #include "cuda/gpu_traverse.cuh"
+
+#include <algorithm>
 
 namespace glint::cuda {
 namespace {
 
-// 128 threads: traversal keeps two 64-entry stacks per thread in local memory, and smaller blocks
-// measured no slower while leaving the scheduler more freedom (docs/perf.md, CUDA backend).
+// 128 threads a block; every thread keeps two 64-entry stacks (node, entry distance) in local memory.
 constexpr uint32_t kTraceBlock = 128;
 constexpr uint32_t kBoxBlock = 128;
+constexpr uint32_t kWarp = 32;
 
 __device__ inline accel::Ray load_ray(const accel::Ray* rays, uint32_t i) {
   const float4* raw = reinterpret_cast<const float4*>(rays + i);
@@ -24,30 +26,85 @@ __device__ inline accel::Ray load_ray(const accel::Ray* rays, uint32_t i) {
   return ray;
 }
 
-__global__ void __launch_bounds__(kTraceBlock)
-    trace_closest_kernel(accel::TlasView tlas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                         uint32_t capacity, uint32_t* overflow) {
-  const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  const uint32_t count = ray_count ? min(*ray_count, capacity) : capacity;
-  if (i >= count) return;
+// What one thread does with one ray, per kind of structure.
+struct TwoLevelTrace {
+  accel::TlasView tlas;
+  __device__ accel::Hit operator()(const accel::Ray& ray, bool& overflow) const {
+    return gpu_trace_closest(tlas, ray, overflow);
+  }
+};
+
+struct SingleLevelTrace {
+  accel::Blas blas;
+  __device__ accel::Hit operator()(const accel::Ray& ray, bool& overflow) const {
+    accel::Hit hit;
+    float t_max = ray.t_max;
+    if (gpu_intersect_closest(blas, ray.origin, ray.direction, ray.t_min, t_max, hit, overflow)) hit.instance = 0;
+    return hit;
+  }
+};
+
+template <typename TraceOne>
+__device__ inline void trace_slot(const TraceOne& trace_one, const TraceLaunch& launch, uint32_t i) {
   bool overflowed = false;
-  hits[i] = gpu_trace_closest(tlas, load_ray(rays, i), overflowed);
-  if (overflowed) atomicOr(overflow, 1u);
+  launch.hits[i] = trace_one(load_ray(launch.rays, i), overflowed);
+  if (overflowed) atomicOr(launch.overflow, 1u);
 }
 
-__global__ void __launch_bounds__(kTraceBlock)
-    trace_closest_single_kernel(accel::Blas blas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                                uint32_t capacity, uint32_t* overflow) {
+__device__ inline uint32_t ray_total(const TraceLaunch& launch) {
+  return launch.ray_count ? min(*launch.ray_count, launch.capacity) : launch.capacity;
+}
+
+template <typename TraceOne>
+__global__ void __launch_bounds__(kTraceBlock) one_ray_per_thread_kernel(TraceOne trace_one, TraceLaunch launch) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
-  const uint32_t count = ray_count ? min(*ray_count, capacity) : capacity;
-  if (i >= count) return;
-  const accel::Ray ray = load_ray(rays, i);
-  accel::Hit hit;
-  float t_max = ray.t_max;
-  bool overflowed = false;
-  if (gpu_intersect_closest(blas, ray.origin, ray.direction, ray.t_min, t_max, hit, overflowed)) hit.instance = 0;
-  hits[i] = hit;
-  if (overflowed) atomicOr(overflow, 1u);
+  if (i < ray_total(launch)) trace_slot(trace_one, launch, i);
+}
+
+// Persistent warps: each warp takes 32 consecutive rays at a time from launch.next_ray (one atomic
+// per warp, its lane 0's, broadcast with a shuffle) until the list is exhausted. The lanes stay
+// together through the loop, so the full-mask shuffle is legal.
+template <typename TraceOne>
+__global__ void __launch_bounds__(kTraceBlock) persistent_kernel(TraceOne trace_one, TraceLaunch launch) {
+  const uint32_t total = ray_total(launch);
+  const uint32_t lane = threadIdx.x % kWarp;
+  for (;;) {
+    uint32_t base = 0;
+    if (lane == 0) base = atomicAdd(launch.next_ray, kWarp);
+    base = __shfl_sync(0xFFFFFFFFu, base, 0);
+    if (base >= total) return;
+    if (base + lane < total) trace_slot(trace_one, launch, base + lane);
+  }
+}
+
+unsigned int blocks(uint32_t count, uint32_t block) { return (count + block - 1) / block; }
+
+// As many blocks of the persistent kernel as fit on the GPU at once (measured once per process).
+template <typename TraceOne>
+unsigned int resident_blocks() {
+  static const unsigned int count = [] {
+    int device = 0, multiprocessors = 0, per_multiprocessor = 0;
+    GLINT_CUDA_CHECK(cudaGetDevice(&device));
+    GLINT_CUDA_CHECK(cudaDeviceGetAttribute(&multiprocessors, cudaDevAttrMultiProcessorCount, device));
+    GLINT_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_multiprocessor, persistent_kernel<TraceOne>,
+                                                                   static_cast<int>(kTraceBlock), 0));
+    return static_cast<unsigned int>(multiprocessors * (per_multiprocessor > 0 ? per_multiprocessor : 1));
+  }();
+  return count;
+}
+
+template <typename TraceOne>
+void launch_kernel(const TraceOne& trace_one, const TraceLaunch& launch, cudaStream_t stream) {
+  if (launch.capacity == 0) return;
+  if (launch.kernel == TraceKernel::persistent) {
+    if (launch.next_ray == nullptr) fail_message("rt cuda: the persistent trace kernel needs a ray counter");
+    GLINT_CUDA_CHECK(cudaMemsetAsync(launch.next_ray, 0, sizeof(uint32_t), stream));
+    const unsigned int grid = std::min(resident_blocks<TraceOne>(), blocks(launch.capacity, kTraceBlock));
+    persistent_kernel<<<grid, kTraceBlock, 0, stream>>>(trace_one, launch);
+  } else {
+    one_ray_per_thread_kernel<<<blocks(launch.capacity, kTraceBlock), kTraceBlock, 0, stream>>>(trace_one, launch);
+  }
+  GLINT_CUDA_CHECK_LAUNCH();
 }
 
 __global__ void __launch_bounds__(kTraceBlock)
@@ -76,24 +133,14 @@ __global__ void instance_boxes_kernel(const accel::Instance* instances, uint32_t
   boxes[i] = world;
 }
 
-unsigned int blocks(uint32_t count, uint32_t block) { return (count + block - 1) / block; }
-
 }  // namespace
 
-void launch_trace_closest(const accel::TlasView& tlas, const accel::Ray* rays, accel::Hit* hits,
-                          const uint32_t* ray_count, uint32_t capacity, uint32_t* overflow, cudaStream_t stream) {
-  if (capacity == 0) return;
-  trace_closest_kernel<<<blocks(capacity, kTraceBlock), kTraceBlock, 0, stream>>>(tlas, rays, hits, ray_count,
-                                                                                  capacity, overflow);
-  GLINT_CUDA_CHECK_LAUNCH();
+void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
+  launch_kernel(TwoLevelTrace{tlas}, launch, stream);
 }
 
-void launch_trace_closest(const accel::Blas& blas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                          uint32_t capacity, uint32_t* overflow, cudaStream_t stream) {
-  if (capacity == 0) return;
-  trace_closest_single_kernel<<<blocks(capacity, kTraceBlock), kTraceBlock, 0, stream>>>(blas, rays, hits, ray_count,
-                                                                                         capacity, overflow);
-  GLINT_CUDA_CHECK_LAUNCH();
+void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream) {
+  launch_kernel(SingleLevelTrace{blas}, launch, stream);
 }
 
 void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMesh& mesh, const accel::Ray* rays,

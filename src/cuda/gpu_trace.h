@@ -4,6 +4,7 @@
 #include "accel/kdtree.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
+#include "cuda/trace_kernel.h"
 
 #include <cuda_runtime.h>
 
@@ -11,15 +12,26 @@
 
 namespace glint::cuda {
 
-// hits[i] = closest hit of rays[i] through `tlas` (device views) for i < min(*ray_count, capacity);
-// ray_count may be null (then `capacity` rays). Sets *overflow (device memory) to 1 when some ray's
-// traversal stack overflowed (its hit may then be wrong). Asynchronous on `stream`.
-void launch_trace_closest(const accel::TlasView& tlas, const accel::Ray* rays, accel::Hit* hits,
-                          const uint32_t* ray_count, uint32_t capacity, uint32_t* overflow, cudaStream_t stream);
+// A closest-hit launch over a ray list in device memory: hits[i] = closest hit of rays[i] for
+// i < min(*ray_count, capacity); ray_count may be null (then `capacity` rays). *overflow (device
+// memory) is set to 1 when some ray's traversal stack overflowed (its hit may then be wrong).
+// next_ray is a device counter the persistent kernel hands rays out with (zeroed by the launch;
+// unused by the other kernel, may be null there).
+struct TraceLaunch {
+  const accel::Ray* rays = nullptr;
+  accel::Hit* hits = nullptr;
+  const uint32_t* ray_count = nullptr;
+  uint32_t capacity = 0;
+  uint32_t* overflow = nullptr;
+  uint32_t* next_ray = nullptr;
+  TraceKernel kernel = kDefaultTraceKernel;
+};
 
-// The same over one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
-void launch_trace_closest(const accel::Blas& blas, const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                          uint32_t capacity, uint32_t* overflow, cudaStream_t stream);
+// Through `tlas` (device views): Hit.instance is the instance index. Asynchronous on `stream`.
+void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
+
+// Through one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
+void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream);
 
 // The same through a kd-tree (accel/kdtree_traverse.h's front-to-back traversal, whose stack the
 // builder's depth limit bounds) over one mesh: Hit.instance is 0.

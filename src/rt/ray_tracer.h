@@ -11,6 +11,7 @@
 #include "accel/builder.h"
 #include "accel/build_options.h"
 #include "accel/ray.h"
+#include "cuda/trace_kernel.h"
 #include "rt/optix_build_preference.h"
 #include "scene/scene.h"
 
@@ -50,6 +51,8 @@ struct AccelOptions {
   // kernels, several times faster); false traces the binary BVHs (kept for comparison). Builders
   // whose BVH cannot be collapsed (sbvh: split references) trace the binary BVH either way.
   bool wide_traversal = true;
+  // cuda backend: which closest-hit kernel traces the ray lists (cuda/trace_kernel.h).
+  cuda::TraceKernel cuda_trace_kernel = cuda::kDefaultTraceKernel;
   // optix backend: how OptiX builds every GAS (and the IAS); the BVH builder above is not used.
   OptixBuildPreference optix_build = OptixBuildPreference::fast_trace;
 };

@@ -181,7 +181,8 @@ TEST(AccelBenchRun, AllMeansTheBackendsStructuresPlusEmbree) {
   EXPECT_NE(std::find(cpu.begin(), cpu.end(), "sah-wide8"), cpu.end());
   EXPECT_EQ(std::count_if(cpu.begin(), cpu.end(), [](const std::string& n) { return n.starts_with("cuda-"); }), 0);
   EXPECT_EQ(cuda, (std::vector<std::string>{"cuda-none", "cuda-median", "cuda-sah", "cuda-sbvh", "cuda-lbvh",
-                                            "cuda-trbvh", "cuda-ploc", "cuda-kdtree", "embree-low", "embree-medium", "embree-high",
+                                            "cuda-trbvh", "cuda-ploc", "cuda-kdtree", "cuda-lbvh-persistent",
+                                            "cuda-sah-persistent", "embree-low", "embree-medium", "embree-high",
                                             "embree-refit"}));
   // Named structures of both kinds mix.
   EXPECT_EQ(parse_structure_list("cuda-lbvh,sah-wide8", "cuda").front(), "cuda-lbvh");
@@ -197,7 +198,8 @@ TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   Scene scene = glint::testing::make_tiny_scene(4);
   BenchOptions options = small_options();
-  options.structures = {"sah", "cuda-lbvh", "cuda-ploc", "cuda-sah", "cuda-sbvh", "cuda-kdtree", "embree-medium"};
+  options.structures = {"sah",         "cuda-lbvh",           "cuda-ploc",           "cuda-sah",     "cuda-sbvh",
+                        "cuda-kdtree", "cuda-lbvh-persistent", "cuda-sah-persistent", "embree-medium"};
   options.deform_frames = 3;
   const BenchReport report = run_accel_bench(scene, options);
   ASSERT_EQ(report.structures.size(), options.structures.size());

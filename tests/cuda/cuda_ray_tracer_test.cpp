@@ -67,9 +67,14 @@ TEST(CudaRayTracer, EveryBuilderEqualsTheCpuBackendOn100kReflectionRays) {
   ASSERT_GT(hit_count, rays.size() / 4) << "the rays must mostly hit something to test anything";
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
     if (builder == accel::BvhBuilder::none) continue;  // brute force on 100k rays: covered above on fewer
-    const auto tracer = make_ray_tracer("cuda");
-    tracer->build(scene, with_builder(builder));
-    EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "") << accel::builder_name(builder);
+    for (cuda::TraceKernel kernel : {cuda::TraceKernel::one_ray_per_thread, cuda::TraceKernel::persistent}) {
+      const auto tracer = make_ray_tracer("cuda");
+      AccelOptions options = with_builder(builder);
+      options.cuda_trace_kernel = kernel;
+      tracer->build(scene, options);
+      EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "")
+          << accel::builder_name(builder) << " " << cuda::trace_kernel_name(kernel);
+    }
   }
 }
 
@@ -191,10 +196,23 @@ TEST(CudaRayTracer, DeviceTraceReadsTheRayCountOnTheGpu) {
   EXPECT_GE(device->last_trace_ms(), 0.0);  // waits for the trace
   const std::vector<accel::Hit> hits = host_copy(device_hits, rays.size());
   const std::span<const accel::Ray> traced_rays(rays.data(), traced);
-  EXPECT_EQ(compare_hits(scene, traced_rays, brute_force_hits(scene, traced_rays),
-                         std::span<const accel::Hit>(hits.data(), traced)),
-            "");
+  const std::vector<accel::Hit> expected = brute_force_hits(scene, traced_rays);
+  EXPECT_EQ(compare_hits(scene, traced_rays, expected, std::span<const accel::Hit>(hits.data(), traced)), "");
   for (size_t i = traced; i < hits.size(); ++i) ASSERT_EQ(hits[i].t, -7.0f) << "slot " << i << " past the count";
+  // The persistent kernel stops at the same count.
+  AccelOptions persistent;
+  persistent.cuda_trace_kernel = cuda::TraceKernel::persistent;
+  tracer->build(scene, persistent);
+  const std::vector<accel::Hit> sentinels(rays.size(), sentinel);
+  ASSERT_EQ(cudaMemcpy(device_hits, sentinels.data(), rays.size() * sizeof(accel::Hit), cudaMemcpyHostToDevice),
+            cudaSuccess);
+  device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
+  EXPECT_GE(device->last_trace_ms(), 0.0);
+  const std::vector<accel::Hit> persistent_hits = host_copy(device_hits, rays.size());
+  EXPECT_EQ(compare_hits(scene, traced_rays, expected, std::span<const accel::Hit>(persistent_hits.data(), traced)),
+            "");
+  for (size_t i = traced; i < hits.size(); ++i)
+    ASSERT_EQ(persistent_hits[i].t, -7.0f) << "slot " << i << " past the count (persistent)";
   cudaFree(device_rays);
   cudaFree(device_hits);
   cudaFree(device_count);

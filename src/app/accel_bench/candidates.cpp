@@ -171,15 +171,21 @@ Candidate embree_candidate(const accel::EmbreeDevice& device, accel::EmbreeQuali
 
 std::string cuda_name(accel::BvhBuilder builder) { return "cuda-" + std::string(accel::builder_name(builder)); }
 
+// The same structure traced by the other kernel (cuda/trace_kernel.h), for comparing the two.
+std::string cuda_persistent_name(accel::BvhBuilder builder) { return cuda_name(builder) + "-persistent"; }
+
 // A structure on the GPU, traced by the cuda backend's kernel; its times are GPU times (what they
 // include: cuda/gpu_bench_structure.h).
-Candidate cuda_candidate(accel::BvhBuilder builder) {
+// The structures also traced with the persistent kernel: the GPU-built one and the best-SAH one.
+constexpr accel::BvhBuilder kPersistentKernelSources[] = {accel::BvhBuilder::lbvh, accel::BvhBuilder::sah};
+
+Candidate cuda_candidate(accel::BvhBuilder builder, cuda::TraceKernel kernel = cuda::kDefaultTraceKernel) {
   auto structure = std::make_shared<std::optional<cuda::GpuBenchStructure>>();
   Candidate candidate;
-  candidate.name = cuda_name(builder);
+  candidate.name = kernel == cuda::TraceKernel::persistent ? cuda_persistent_name(builder) : cuda_name(builder);
   candidate.brute_force = builder == accel::BvhBuilder::none;
-  candidate.build = [structure, builder](const accel::TriangleMesh& mesh) {
-    if (!*structure) structure->emplace(builder);
+  candidate.build = [structure, builder, kernel](const accel::TriangleMesh& mesh) {
+    if (!*structure) structure->emplace(builder, accel::BuildOptions{}, kernel);
     return (*structure)->build(mesh);
   };
   candidate.refit = [structure](const accel::TriangleMesh& mesh) -> std::optional<double> {
@@ -256,6 +262,9 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({cuda_name(builder), [builder] { return cuda_candidate(builder); }});
   menu.push_back({"cuda-kdtree", [] { return cuda_kdtree_candidate(); }});
+  for (const accel::BvhBuilder builder : kPersistentKernelSources)
+    menu.push_back(
+        {cuda_persistent_name(builder), [builder] { return cuda_candidate(builder, cuda::TraceKernel::persistent); }});
   for (CandidateEntry& entry : optix_candidate_menu()) menu.push_back(std::move(entry));
   return menu;
 }
@@ -284,6 +293,7 @@ std::vector<std::string> cuda_candidate_names() {
   std::vector<std::string> names;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) names.push_back(cuda_name(builder));
   names.emplace_back("cuda-kdtree");
+  for (const accel::BvhBuilder builder : kPersistentKernelSources) names.push_back(cuda_persistent_name(builder));
   return names;
 }
 

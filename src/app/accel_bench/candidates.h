@@ -61,8 +61,9 @@ inline constexpr accel::BvhBuilder kWideSources[] = {accel::BvhBuilder::sah, acc
 std::string wide_candidate_name(accel::BvhBuilder builder, int width);
 
 std::vector<std::string> candidate_names();
-// "cuda-<builder>" for every accel::kAllBvhBuilders builder, then "cuda-kdtree": what
-// `--backend cuda --builders all` runs.
+// "cuda-<builder>" for every accel::kAllBvhBuilders builder, "cuda-kdtree", then
+// "cuda-lbvh-persistent" and "cuda-sah-persistent" (the same BVHs traced by the persistent-threads
+// kernel, cuda/trace_kernel.h): what `--backend cuda --builders all` runs.
 std::vector<std::string> cuda_candidate_names();
 std::vector<std::string> embree_candidate_names();
 
