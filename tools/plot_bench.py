@@ -110,9 +110,11 @@ def plot_fig12(summary, out_dir):
             ax.plot(xs, ys, color=MODE_COLOURS.get(cell["reflections"]), linewidth=1.2,
                     marker="." if len(xs) < 30 else None, label=cell["reflections"])
         style_axes(ax, "Fig. 12 " + title, "walkthrough frame", "frame time (ms)")
-        ax.set_ylim(bottom=0)
         if ax.lines:
             ax.legend(fontsize=8)
+    # Once both panels hold their lines: the shared axis then spans both (setting it on the first
+    # panel alone froze its top at the static panel's data and cut the deforming curves).
+    axes[0].set_ylim(bottom=0)
     fig.suptitle(setting_text(summary), fontsize=8, x=0.99, ha="right")
     save(fig, out_dir, "fig12")
     return True
