@@ -26,21 +26,6 @@ namespace fs = std::filesystem;
 
 using BenchCli = GlTest;  // skips without headless OpenGL 4.5 (the command would fail)
 
-std::string quoted(const fs::path& path) { return "\"" + path.string() + "\""; }
-
-std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream text(read_text_file(path));
-  for (std::string line; std::getline(text, line);) {
-    std::vector<std::string> fields;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
 std::size_t column(const std::vector<std::string>& header, const std::string& name) {
   const auto found = std::find(header.begin(), header.end(), name);
   EXPECT_NE(found, header.end()) << name;

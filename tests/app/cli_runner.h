@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 
 #include "support/test_paths.h"
@@ -22,6 +23,30 @@ inline std::string read_text_file(const std::filesystem::path& path) {
   std::stringstream text;
   text << file.rdbuf();
   return text.str();
+}
+
+// A path in double quotes, for a command line (built by appending: GCC 12 warns falsely about
+// "literal" + std::string under -O2).
+inline std::string quoted(const std::filesystem::path& path) {
+  std::string text = "\"";
+  text += path.string();
+  text += "\"";
+  return text;
+}
+
+// The rows of a CSV file written by glint (no quoting), each split at commas; a trailing comma gives a
+// last empty field.
+inline std::vector<std::vector<std::string>> read_csv(const std::filesystem::path& path) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream text(read_text_file(path));
+  for (std::string line; std::getline(text, line);) {
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    rows.push_back(fields);
+  }
+  return rows;
 }
 
 // `arguments` is appended to the command line as is (quote paths yourself).

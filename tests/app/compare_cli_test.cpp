@@ -18,13 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& path) {
-  std::string text = "\"";
-  text += path.string();
-  text += "\"";
-  return text;
-}
-
 std::string args(std::initializer_list<std::string> parts) {
   std::string text;
   for (const std::string& part : parts) {

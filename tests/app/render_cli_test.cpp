@@ -23,21 +23,6 @@ namespace fs = std::filesystem;
 // GlTest skips every test when this machine has no headless OpenGL 4.5 (the command would fail).
 using RenderCli = GlTest;
 
-std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::stringstream text(read_text_file(path));
-  for (std::string line; std::getline(text, line);) {
-    std::vector<std::string> fields;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    rows.push_back(fields);
-  }
-  return rows;
-}
-
-std::string quoted(const fs::path& path) { return "\"" + path.string() + "\""; }
-
 TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
   TempFolder folder;
   const fs::path out = folder.path() / "run";
