@@ -2,7 +2,7 @@
 
 #include "app/accel_bench/bench_run.h"
 #include "app/accel_bench/candidates.h"
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 #include "app/accel_bench/report_json.h"
 #include "app/accel_bench/report_table.h"
 #include "core/error.h"

@@ -5,7 +5,7 @@
 #include "rt/cpu_ray_tracer.h"
 #include "rt/embree_ray_tracer.h"
 #if GLINT_HAVE_OPTIX
-#include "optix/optix_ray_tracer.h"
+#include "optix/backend.h"
 #endif
 
 namespace glint::rt {

@@ -12,7 +12,7 @@
 #include "accel/build_options.h"
 #include "accel/ray.h"
 #include "cuda/trace_kernel.h"
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -128,7 +128,7 @@ public:
 };
 
 // "cpu", "embree", "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU) or "optix"
-// (optix/optix_ray_tracer.h); glint::Error listing the known names otherwise, or check_backend_built's.
+// (optix/backend.h); glint::Error listing the known names otherwise, or check_backend_built's.
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
 // glint::Error, one line saying how to enable it, for a backend this build lacks (optix without
 // OptiX); nothing otherwise. Lets a command refuse before it writes anything.

@@ -2,7 +2,7 @@
 // or an OptiX build on a machine without a CUDA GPU, is one line that says what is missing.
 #include "rt/ray_tracer.h"
 
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 #include "cuda/device_query.h"
 #include "support/error_of.h"
 

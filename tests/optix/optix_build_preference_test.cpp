@@ -1,7 +1,7 @@
 // The optix builder names (any machine): what --accel and accel-bench accept for the optix backend.
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 #include "rt/ray_tracer.h"
 #include "support/error_of.h"
 

@@ -1,10 +1,10 @@
 // accel-bench's optix rows: one GAS over the world triangles, hits with instance 0 and the world
 // triangle index, equal to brute force; a refit follows moved vertices. Needs a build with OptiX and
 // a CUDA GPU; skipped elsewhere.
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 
 #include "accel/triangle_mesh.h"
-#include "optix/optix_test_support.h"
+#include "optix/test_support.h"
 #include "rt/ray_tracer_check.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // (the GPU machine runs them: --gtest_filter='Optix*').
 #include "rt/ray_tracer.h"
 
-#include "optix/optix_test_support.h"
+#include "optix/test_support.h"
 #include "rt/ray_tracer_check.h"
 #include "rt/reflection_rays.h"
 #include "scene/sine_deformer.h"

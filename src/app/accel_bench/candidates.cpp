@@ -12,7 +12,7 @@
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "accel/wide_bvh_trace.h"
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 #include "core/error.h"
 #include "cuda/gpu_bench_kdtree.h"
 #include "cuda/gpu_bench_structure.h"

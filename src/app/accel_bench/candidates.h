@@ -50,7 +50,8 @@ struct CandidateEntry {
 // Every known structure: each accel::kAllBvhBuilders builder by its builder_name, "kdtree", the wide
 // BVHs, "embree-low", "embree-medium", "embree-high", "embree-refit", then the GPU structures
 // "cuda-<builder>" for every builder (cuda/gpu_bench_structure.h) and "cuda-kdtree"
-// (cuda/gpu_bench_kdtree.h; making one fails with one clear line without CUDA or a GPU), then "optix-fasttrace" and "optix-fastbuild" (optix_candidates.h).
+// (cuda/gpu_bench_kdtree.h; making one fails with one clear line without CUDA or a GPU), then
+// "optix-fasttrace" and "optix-fastbuild" (candidates_optix.h).
 // `device` must outlive the candidates.
 std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
 

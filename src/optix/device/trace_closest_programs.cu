@@ -2,7 +2,7 @@
 // written as glint's hit record (src/rt/ray_tracer.h's convention), so shading is the same for every
 // backend. Compiled at build time to OptiX-IR and embedded in the binary
 // (cmake/GlintOptix.cmake); never linked as ordinary CUDA code.
-#include "optix/optix_launch_params.h"
+#include "optix/launch_params.h"
 
 #include <optix.h>
 

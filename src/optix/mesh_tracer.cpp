@@ -1,11 +1,11 @@
-#include "optix/optix_mesh_tracer.h"
+#include "optix/mesh_tracer.h"
 
 #include "core/error.h"
 #include "cuda/cuda_stream_events.h"
-#include "optix/optix_device_context.h"
-#include "optix/optix_host_trace.h"
-#include "optix/optix_trace_pipeline.h"
-#include "optix/optix_triangle_gas.h"
+#include "optix/device_context.h"
+#include "optix/host_trace.h"
+#include "optix/trace_pipeline.h"
+#include "optix/triangle_gas.h"
 
 #include <chrono>
 #include <span>

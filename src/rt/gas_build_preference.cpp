@@ -1,4 +1,4 @@
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 
 #include "core/error.h"
 

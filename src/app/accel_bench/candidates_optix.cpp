@@ -1,10 +1,10 @@
-#include "app/accel_bench/optix_candidates.h"
+#include "app/accel_bench/candidates_optix.h"
 
 #include "core/error.h"
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 #include "rt/ray_tracer.h"
 #if GLINT_HAVE_OPTIX
-#include "optix/optix_mesh_tracer.h"
+#include "optix/mesh_tracer.h"
 #endif
 
 #include <memory>

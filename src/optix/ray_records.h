@@ -1,9 +1,9 @@
 #pragma once
-// glint's rays and hits seen as the device programs' records (optix_launch_params.h): the layouts
+// glint's rays and hits seen as the device programs' records (launch_params.h): the layouts
 // are checked here, once, so raygen can read accel::Ray lists and write accel::Hit records in place,
 // in the GL buffers the renderer shares with CUDA.
 #include "accel/ray.h"
-#include "optix/optix_launch_params.h"
+#include "optix/launch_params.h"
 
 #include <cstddef>
 

@@ -5,7 +5,7 @@
 // and updating it every frame allocate nothing. Needs the OptiX and CUDA headers.
 #include "core/math.h"
 #include "cuda/device_buffer.h"
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 
 #include <cuda_runtime.h>
 #include <optix_types.h>

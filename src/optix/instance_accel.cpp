@@ -1,6 +1,6 @@
-#include "optix/optix_instance_accel.h"
+#include "optix/instance_accel.h"
 
-#include "optix/optix_check.h"
+#include "optix/result_check.h"
 
 #include <optix_stubs.h>
 

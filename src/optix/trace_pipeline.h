@@ -3,7 +3,7 @@
 // closest hit, miss; src/optix/device/), its program groups, the shader binding table (one record
 // each, no data: every instance and triangle uses the one hit group) and the launch.
 // Needs the OptiX and CUDA headers.
-#include "optix/optix_launch_params.h"
+#include "optix/launch_params.h"
 #include "optix/pinned_upload.h"
 
 #include <cuda_runtime.h>

@@ -1,10 +1,10 @@
-#include "optix/optix_device_context.h"
+#include "optix/device_context.h"
 
 #include "core/error.h"
 #include "core/log.h"
 #include "cuda/cuda_check.h"
 #include "cuda/device_query.h"
-#include "optix/optix_check.h"
+#include "optix/result_check.h"
 
 #include <cuda_runtime.h>
 #include <optix.h>

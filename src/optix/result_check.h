@@ -1,7 +1,7 @@
 #pragma once
 // Every OptiX call goes through GLINT_OPTIX_CHECK, so a failure becomes one glint::Error naming the
 // call, the OptiX error, the file and line, and what OptiX logged about it. Needs the OptiX headers.
-#include "optix/optix_errors.h"
+#include "optix/errors.h"
 
 #include <optix.h>
 

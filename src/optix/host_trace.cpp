@@ -1,7 +1,7 @@
-#include "optix/optix_host_trace.h"
+#include "optix/host_trace.h"
 
 #include "core/error.h"
-#include "optix/optix_ray_records.h"
+#include "optix/ray_records.h"
 
 #include <limits>
 

@@ -1,4 +1,4 @@
-#include "optix/optix_errors.h"
+#include "optix/errors.h"
 
 #include "core/error.h"
 

@@ -1,4 +1,4 @@
-#include "optix/optix_test_support.h"
+#include "optix/test_support.h"
 
 #include "rt/ray_tracer_check.h"
 #include "rt/scene_geometry.h"

@@ -5,7 +5,7 @@
 // (accel-bench's optix rows report it, like the cuda rows' kernel time). Needs the CUDA headers.
 #include "accel/ray.h"
 #include "cuda/device_buffer.h"
-#include "optix/optix_trace_pipeline.h"
+#include "optix/trace_pipeline.h"
 
 #include <cuda_runtime.h>
 #include <optix_types.h>

@@ -1,7 +1,7 @@
-#include "optix/optix_trace_pipeline.h"
+#include "optix/trace_pipeline.h"
 
 #include "optix/embedded_optix_modules.h"
-#include "optix/optix_check.h"
+#include "optix/result_check.h"
 
 #include <optix_stack_size.h>
 #include <optix_stubs.h>

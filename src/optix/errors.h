@@ -1,5 +1,5 @@
 #pragma once
-// How OptiX failures become glint::Error. The context's log callback (optix_device_context.cpp)
+// How OptiX failures become glint::Error. The context's log callback (device_context.cpp)
 // records OptiX's error-level messages here, and the next failed call's error carries them, so the
 // one line the CLI prints says what OptiX complained about. Needs the OptiX headers.
 #include <optix_types.h>

@@ -1,6 +1,6 @@
 #pragma once
 // One OptiX GAS over one triangle mesh with the closest-hit query, for accel-bench's optix rows
-// (src/app/accel_bench/optix_candidates.h): the same single-level setting as glint's own builders
+// (src/app/accel_bench/candidates_optix.h): the same single-level setting as glint's own builders
 // there, hits with instance 0 (a GAS traced without an instance). Build and refit times are wall
 // clock from the first enqueue to the GPU finishing, synchronous, so they include launch overheads
 // and, for optix-fasttrace, compaction with its host readback of the compacted size; the trace time
@@ -8,7 +8,7 @@
 // Plain C++ (no OptiX or CUDA headers); built only with GLINT_HAVE_OPTIX.
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
-#include "rt/optix_build_preference.h"
+#include "rt/gas_build_preference.h"
 
 #include <cstddef>
 #include <memory>

@@ -1,7 +1,7 @@
-#include "optix/optix_triangle_gas.h"
+#include "optix/triangle_gas.h"
 
 #include "core/error.h"
-#include "optix/optix_check.h"
+#include "optix/result_check.h"
 
 #include <optix_stubs.h>
 

@@ -1,14 +1,14 @@
-#include "optix/optix_ray_tracer.h"
+#include "optix/backend.h"
 
 #include "core/error.h"
 #include "cuda/cuda_stream_events.h"
-#include "optix/optix_check.h"
-#include "optix/optix_device_context.h"
-#include "optix/optix_host_trace.h"
-#include "optix/optix_instance_accel.h"
-#include "optix/optix_ray_records.h"
-#include "optix/optix_trace_pipeline.h"
-#include "optix/optix_triangle_gas.h"
+#include "optix/result_check.h"
+#include "optix/device_context.h"
+#include "optix/host_trace.h"
+#include "optix/instance_accel.h"
+#include "optix/ray_records.h"
+#include "optix/trace_pipeline.h"
+#include "optix/triangle_gas.h"
 #include "rt/scene_shape.h"
 
 #include <algorithm>
