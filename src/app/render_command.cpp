@@ -31,10 +31,6 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The backends whose structures live on the GPU (rt::DeviceTracing): they trace the GL-shared ray
-// list in place and follow the GPU deformer.
-bool is_gpu_backend(const std::string& backend) { return backend == "cuda" || backend == "optix"; }
-
 std::string builder_names() {
   std::string names;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) {
@@ -81,7 +77,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
          "or --deform off",
          options.update);
   if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && deforms_on_gpu(options) &&
-      !is_gpu_backend(options.backend))
+      !rt::is_gpu_backend(options.backend))
     fail("--deform-on gpu needs --backend cuda or optix when reflections are ray traced (the {} backend builds from host "
          "vertices); use --deform-on cpu",
          options.backend);
@@ -91,7 +87,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
 
 
 bool deforms_on_gpu(const RenderOptions& options) {
-  return options.deform_on.empty() ? is_gpu_backend(options.backend) : options.deform_on == "gpu";
+  return options.deform_on.empty() ? rt::is_gpu_backend(options.backend) : options.deform_on == "gpu";
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -185,7 +181,7 @@ int run_render_command(const RenderOptions& options) {
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracing(settings.reflections)) {
     rt::check_backend_built(options.backend);
-    if (is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+    if (rt::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 

@@ -2,11 +2,13 @@
 
 #include "accel/bvh_stats.h"
 #include "cuda/cuda_check.h"
+#include "cuda/cuda_stream_events.h"
 #include "cuda/device_query.h"
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_bvh_sah.h"
 #include "cuda/gpu_mesh.h"
 #include "cuda/gpu_trace.h"
+#include "cuda/pinned_upload.h"
 #include "rt/scene_shape.h"
 
 #include <algorithm>
@@ -34,34 +36,16 @@ GpuBvhBuilder gpu_builder_of(accel::BvhBuilder builder) {
 // A start/stop pair of CUDA events around enqueued work: the GPU time, read when asked.
 class EventTimer {
 public:
-  EventTimer() {
-    GLINT_CUDA_CHECK(cudaEventCreate(&start_));
-    GLINT_CUDA_CHECK(cudaEventCreate(&stop_));
-  }
-  ~EventTimer() {
-    cudaEventDestroy(start_);
-    cudaEventDestroy(stop_);
-  }
-  EventTimer(const EventTimer&) = delete;
-  EventTimer& operator=(const EventTimer&) = delete;
-
-  void start(cudaStream_t stream) { GLINT_CUDA_CHECK(cudaEventRecord(start_, stream)); }
+  void start(cudaStream_t stream) { start_.record(stream); }
   void stop(cudaStream_t stream) {
-    GLINT_CUDA_CHECK(cudaEventRecord(stop_, stream));
+    stop_.record(stream);
     recorded_ = true;
   }
   // Waits for the stop event; 0 before anything was timed.
-  double elapsed_ms() {
-    if (!recorded_) return 0.0;
-    GLINT_CUDA_CHECK(cudaEventSynchronize(stop_));
-    float ms = 0.0f;
-    GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, start_, stop_));
-    return ms;
-  }
+  double elapsed_ms() const { return recorded_ ? cuda::elapsed_ms(start_, stop_) : 0.0; }
 
 private:
-  cudaEvent_t start_ = nullptr;
-  cudaEvent_t stop_ = nullptr;
+  CudaEvent start_, stop_;
   bool recorded_ = false;
 };
 
@@ -91,16 +75,10 @@ private:
 
 class CudaRayTracer final : public rt::RayTracer, public rt::DeviceTracing {
 public:
-  // make_cuda_ray_tracer checks for a GPU first (the members' CUDA events need one).
-  CudaRayTracer() {
-    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
-    GLINT_CUDA_CHECK(cudaEventCreateWithFlags(&sah_ready_, cudaEventDisableTiming));
-  }
-  ~CudaRayTracer() override {
-    cudaStreamSynchronize(stream_);
-    cudaEventDestroy(sah_ready_);
-    cudaStreamDestroy(stream_);
-  }
+  // make_cuda_ray_tracer checks for a GPU first (the members' CUDA stream and events need one).
+  CudaRayTracer() = default;
+  // Work still queued uses the buffers, which go before the stream does.
+  ~CudaRayTracer() override { cudaStreamSynchronize(stream_.get()); }
 
   void build(const Scene& scene, const rt::AccelOptions& options) override;
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
@@ -109,7 +87,7 @@ public:
   std::string_view name() const override { return "cuda"; }
   rt::DeviceTracing* device_tracing() override { return this; }
 
-  void* stream() override { return stream_; }
+  void* stream() override { return stream_.get(); }
   void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                             uint32_t capacity) override;
   double last_trace_ms() override;
@@ -136,11 +114,12 @@ private:
   void require_built(const char* what) const;
   void require_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) const;
   void rebuild_mesh(uint32_t m);
-  void refit_mesh(uint32_t m);
+  // measure_sah: also measure its SAH cost now (the automatic policy reads it at the next update).
+  void refit_mesh(uint32_t m, bool measure_sah);
   void upload_blas_views();
   void update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   accel::TlasView tlas_view() const {
-    return {tlas_.view(), instances_.data(), blas_views_.data()};
+    return {tlas_.view(), instances_.device(), blas_views_.device()};
   }
   void check_overflow() const;
   TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
@@ -148,24 +127,28 @@ private:
     return {rays, hits, ray_count, capacity, overflow_.data(), next_ray_.data(), options_.cuda_trace_kernel};
   }
 
-  cudaStream_t stream_ = nullptr;
+  // Every call enqueues here; non-blocking, so the legacy default stream does not order it.
+  CudaStream stream_{cudaStreamNonBlocking};
   rt::AccelOptions options_;
   rt::SceneShape shape_;
   std::vector<std::string> mesh_names_;
   std::vector<MeshState> meshes_;
   std::vector<accel::Instance> host_instances_;
-  DeviceBuffer<accel::Instance> instances_;
-  DeviceBuffer<accel::Blas> blas_views_;
+  // Small per-update uploads through pinned memory, so enqueuing them never waits for the GPU.
+  PinnedUpload<accel::Instance> instances_;
+  PinnedUpload<accel::Blas> blas_views_;
   DeviceBuffer<Aabb> instance_boxes_;
   GpuBvh tlas_;
   std::optional<GpuBvhBuild> tlas_builder_;
   DeviceBuffer<uint32_t> tlas_refit_counters_;
 
-  // SAH cost per mesh, [2m] at its last rebuild and [2m + 1] now, computed on the GPU after every
-  // (re)build or refit and copied to pinned host memory at the end of each update (sah_ready_).
-  DeviceBuffer<float> device_sah_;
+  // SAH cost per mesh, [2m] at its last rebuild and [2m + 1] after its last refit, computed on the GPU:
+  // at every (re)build; after a refit only for the automatic policy, whose updates copy them to
+  // pinned host memory (sah_ready_) for the next update to read; stats() measures the current cost.
+  mutable DeviceBuffer<float> device_sah_;
+  mutable DeviceBuffer<double> stats_sah_sums_;
   mutable PinnedArray<float> host_sah_;
-  cudaEvent_t sah_ready_ = nullptr;
+  CudaEvent sah_ready_;
   bool sah_copied_ = false;
 
   // Host-side tracing: the rays and hits in device memory (kept, so repeated calls allocate nothing).
@@ -200,33 +183,34 @@ void CudaRayTracer::rebuild_mesh(uint32_t m) {
   const uint32_t triangles = state.mesh.triangle_count();
   if (state.gpu_builder) {
     state.boxes.resize(triangles);
-    compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_);
-    state.gpu_builder->build(state.boxes.data(), triangles, state.bvh, stream_);
+    compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_.get());
+    state.gpu_builder->build(state.boxes.data(), triangles, state.bvh, stream_.get());
   } else {
     if (!state.host_positions_current) {
       // A GPU deformer moved the vertices: the CPU builder needs them on the host.
       GLINT_CUDA_CHECK(cudaMemcpyAsync(state.host_positions.data(), state.mesh.positions.data(),
-                                       state.mesh.positions.bytes(), cudaMemcpyDeviceToHost, stream_));
-      GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+                                       state.mesh.positions.bytes(), cudaMemcpyDeviceToHost, stream_.get()));
+      GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
       state.host_positions_current = true;
     }
     const accel::Bvh host_bvh = accel::build_bvh(
         options_.builder, accel::make_indexed_mesh(state.host_positions, state.host_indices), options_.build);
-    state.bvh.upload(host_bvh, stream_);
+    state.bvh.upload(host_bvh, stream_.get());
   }
   const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
-  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m, stream_);
+  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m, stream_.get());
   GLINT_CUDA_CHECK(cudaMemcpyAsync(device_sah_.data() + 2 * m + 1, device_sah_.data() + 2 * m, sizeof(float),
-                                   cudaMemcpyDeviceToDevice, stream_));
+                                   cudaMemcpyDeviceToDevice, stream_.get()));
 }
 
-void CudaRayTracer::refit_mesh(uint32_t m) {
+void CudaRayTracer::refit_mesh(uint32_t m, bool measure_sah) {
   MeshState& state = meshes_[m];
   state.boxes.resize(state.mesh.triangle_count());
-  compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_);
-  refit_gpu(state.bvh, state.boxes.data(), state.refit_counters, stream_);
+  compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_.get());
+  refit_gpu(state.bvh, state.boxes.data(), state.refit_counters, stream_.get());
+  if (!measure_sah) return;
   const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
-  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m + 1, stream_);
+  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m + 1, stream_.get());
 }
 
 // The traversal reads each BLAS through a device array of views; a rebuild may move a BVH's
@@ -234,8 +218,7 @@ void CudaRayTracer::refit_mesh(uint32_t m) {
 void CudaRayTracer::upload_blas_views() {
   std::vector<accel::Blas> views(meshes_.size());
   for (std::size_t m = 0; m < meshes_.size(); ++m) views[m] = {meshes_[m].bvh.view(), meshes_[m].mesh.view()};
-  // Pageable source: cudaMemcpyAsync returns once the data is staged, so `views` may go.
-  blas_views_.upload(std::span<const accel::Blas>(views), stream_);
+  blas_views_.upload(std::span<const accel::Blas>(views), stream_.get());
 }
 
 void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
@@ -244,7 +227,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
     fail_message("rt cuda: auto_rebuild_sah_ratio must be >= 1 (got " + std::to_string(options.auto_rebuild_sah_ratio) +
                  ")");
   const auto start = Clock::now();
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   built_ = false;
   options_ = options;
   shape_ = rt::scene_shape(scene);
@@ -259,7 +242,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
     MeshState& state = meshes_[m];
     mesh_names_.push_back(mesh.name);
     state.deformable = mesh.deformable;
-    state.mesh.upload(accel::make_indexed_mesh(mesh.positions, mesh.indices), stream_);
+    state.mesh.upload(accel::make_indexed_mesh(mesh.positions, mesh.indices), stream_.get());
     if (builds_on_gpu(options_.builder)) {
       state.gpu_builder.emplace(gpu_builder_of(options_.builder), options_.build);
     } else {
@@ -272,26 +255,26 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   host_instances_.clear();
   for (const Instance& instance : scene.instances)
     host_instances_.push_back(accel::make_instance(instance.mesh, instance.transform));
-  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_);
+  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_.get());
   instance_boxes_.resize(host_instances_.size());
-  launch_instance_world_boxes(instances_.data(), static_cast<uint32_t>(host_instances_.size()), blas_views_.data(),
-                              instance_boxes_.data(), stream_);
+  launch_instance_world_boxes(instances_.device(), static_cast<uint32_t>(host_instances_.size()), blas_views_.device(),
+                              instance_boxes_.data(), stream_.get());
   tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
-  tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_);
+  tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
   overflow_.resize(1);
   next_ray_.resize(1);
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   build_ms_ = ms_since(start);
   rebuilds_ = refits_ = 0;
   built_ = true;
 }
 
 void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
-  update_timer_.start(stream_);
+  update_timer_.start(stream_.get());
   bool rebuilt_any = false;
   // Automatic: last update's SAH costs are in host memory by now (the copy was queued a frame ago),
   // so waiting for them costs nothing in a frame loop.
-  if (policy == rt::UpdatePolicy::automatic && sah_copied_) GLINT_CUDA_CHECK(cudaEventSynchronize(sah_ready_));
+  if (policy == rt::UpdatePolicy::automatic && sah_copied_) GLINT_CUDA_CHECK(cudaEventSynchronize(sah_ready_.get()));
   for (uint32_t m : dirty_meshes) {
     bool rebuild = policy == rt::UpdatePolicy::rebuild;
     if (policy == rt::UpdatePolicy::automatic && sah_copied_) {
@@ -303,22 +286,24 @@ void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt
       rebuilt_any = true;
       ++rebuilds_;
     } else {
-      refit_mesh(m);
+      refit_mesh(m, policy == rt::UpdatePolicy::automatic);
       ++refits_;
     }
   }
   if (rebuilt_any) upload_blas_views();
-  launch_instance_world_boxes(instances_.data(), static_cast<uint32_t>(host_instances_.size()), blas_views_.data(),
-                              instance_boxes_.data(), stream_);
+  launch_instance_world_boxes(instances_.device(), static_cast<uint32_t>(host_instances_.size()), blas_views_.device(),
+                              instance_boxes_.data(), stream_.get());
   if (policy == rt::UpdatePolicy::rebuild)
-    tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_);
+    tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
   else
-    refit_gpu(tlas_, instance_boxes_.data(), tlas_refit_counters_, stream_);
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(host_sah_.data(), device_sah_.data(), device_sah_.bytes(), cudaMemcpyDeviceToHost,
-                                   stream_));
-  GLINT_CUDA_CHECK(cudaEventRecord(sah_ready_, stream_));
-  sah_copied_ = true;
-  update_timer_.stop(stream_);
+    refit_gpu(tlas_, instance_boxes_.data(), tlas_refit_counters_, stream_.get());
+  if (policy == rt::UpdatePolicy::automatic) {
+    GLINT_CUDA_CHECK(cudaMemcpyAsync(host_sah_.data(), device_sah_.data(), device_sah_.bytes(),
+                                     cudaMemcpyDeviceToHost, stream_.get()));
+    sah_ready_.record(stream_.get());
+    sah_copied_ = true;
+  }
+  update_timer_.stop(stream_.get());
 }
 
 void CudaRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
@@ -328,7 +313,7 @@ void CudaRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_m
   for (uint32_t m : dirty_meshes) {
     MeshState& state = meshes_[m];
     const std::vector<vec3>& positions = scene.meshes[m].positions;
-    state.mesh.positions.upload(std::span<const vec3>(positions), stream_);
+    state.mesh.positions.upload(std::span<const vec3>(positions), stream_.get());
     if (!state.gpu_builder) {
       std::copy(positions.begin(), positions.end(), state.host_positions.begin());
       state.host_positions_current = true;
@@ -337,7 +322,7 @@ void CudaRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_m
   // Transforms may have moved too: re-read them all, the instance list is small.
   for (std::size_t i = 0; i < scene.instances.size(); ++i)
     host_instances_[i] = accel::make_instance(scene.instances[i].mesh, scene.instances[i].transform);
-  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_);
+  instances_.upload(std::span<const accel::Instance>(host_instances_), stream_.get());
   update_structures(dirty_meshes, policy);
 }
 
@@ -363,8 +348,8 @@ vec3* CudaRayTracer::device_positions(uint32_t mesh) {
 
 void CudaRayTracer::check_overflow() const {
   uint32_t overflowed = 0;
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, overflow_.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, stream_));
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, overflow_.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, stream_.get()));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   if (overflowed)
     fail_message("rt cuda: a traversal stack overflowed (a BVH deeper than " + std::to_string(accel::kMaxBvhDepth) +
                  " levels, from the " + std::string(accel::builder_name(options_.builder)) +
@@ -378,24 +363,24 @@ void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<ac
   if (rays.empty()) return;
   if (rays.size() > 0xFFFFFFFFu) fail_message("rt cuda: more than 2^32 - 1 rays in one call");
   const auto count = static_cast<uint32_t>(rays.size());
-  host_rays_.upload(rays, stream_);
+  host_rays_.upload(rays, stream_.get());
   host_hits_.resize(count);
-  overflow_.fill_zero(stream_);
-  trace_timer_.start(stream_);
-  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, count), stream_);
-  trace_timer_.stop(stream_);
+  overflow_.fill_zero(stream_.get());
+  trace_timer_.start(stream_.get());
+  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, count), stream_.get());
+  trace_timer_.stop(stream_.get());
   GLINT_CUDA_CHECK(
-      cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_));
+      cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();
 }
 
 void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                                          uint32_t capacity) {
   require_built("trace_closest_device()");
-  overflow_.fill_zero(stream_);
-  trace_timer_.start(stream_);
-  launch_trace_closest(tlas_view(), trace_launch(rays, hits, ray_count, capacity), stream_);
-  trace_timer_.stop(stream_);
+  overflow_.fill_zero(stream_.get());
+  trace_timer_.start(stream_.get());
+  launch_trace_closest(tlas_view(), trace_launch(rays, hits, ray_count, capacity), stream_.get());
+  trace_timer_.stop(stream_.get());
 }
 
 double CudaRayTracer::last_trace_ms() {
@@ -412,13 +397,21 @@ rt::RayTracerStats CudaRayTracer::stats() const {
   stats.rebuilds = rebuilds_;
   stats.refits = refits_;
   if (!built_) return stats;
-  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_));
-  uint64_t bytes = tlas_.memory_bytes() + instances_.bytes() + blas_views_.bytes() + instance_boxes_.bytes();
+  // The deformable meshes' SAH cost now (refits measure it only for the automatic policy), next to
+  // their cost at the last rebuild.
+  const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
+  for (uint32_t m = 0; m < meshes_.size(); ++m)
+    if (meshes_[m].deformable)
+      compute_sah_gpu(meshes_[m].bvh, costs, stats_sah_sums_, device_sah_.data() + 2 * m + 1, stream_.get());
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(host_sah_.data(), device_sah_.data(), device_sah_.bytes(), cudaMemcpyDeviceToHost,
+                                   stream_.get()));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
+  uint64_t bytes = tlas_.memory_bytes() + instances_.size() * sizeof(accel::Instance) +
+                   blas_views_.size() * sizeof(accel::Blas) + instance_boxes_.bytes();
   for (uint32_t m = 0; m < meshes_.size(); ++m) {
     const MeshState& state = meshes_[m];
     bytes += state.bvh.memory_bytes() + state.mesh.positions.bytes() + state.mesh.indices.bytes();
-    // The SAH costs of meshes updated since build() are in host memory (sah_ready_ has passed).
-    if (!state.deformable || !sah_copied_ || host_sah_[2 * m] <= 0.0f) continue;
+    if (!state.deformable || host_sah_[2 * m] <= 0.0f) continue;
     const double drift = static_cast<double>(host_sah_[2 * m + 1]) / static_cast<double>(host_sah_[2 * m]);
     stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);
   }

@@ -5,7 +5,7 @@
 // buffers kept from the first build. Needs the OptiX and CUDA headers.
 #include "core/math.h"
 #include "cuda/device_buffer.h"
-#include "optix/pinned_upload.h"
+#include "cuda/pinned_upload.h"
 
 #include <cuda_runtime.h>
 #include <optix_types.h>
@@ -31,7 +31,7 @@ public:
   std::size_t bytes() const { return output_.size() + instances_.size() * sizeof(OptixInstance); }
 
 private:
-  PinnedUpload<OptixInstance> instances_;
+  cuda::PinnedUpload<OptixInstance> instances_;
   cuda::DeviceBuffer<std::byte> output_;
   OptixTraversableHandle handle_ = 0;
 };

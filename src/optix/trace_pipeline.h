@@ -4,7 +4,7 @@
 // each, no data: every instance and triangle uses the one hit group) and the launch.
 // Needs the OptiX and CUDA headers.
 #include "optix/launch_params.h"
-#include "optix/pinned_upload.h"
+#include "cuda/pinned_upload.h"
 
 #include <cuda_runtime.h>
 #include <optix_types.h>
@@ -33,7 +33,7 @@ private:
   OptixPipeline pipeline_ = nullptr;
   cuda::DeviceBuffer<std::byte> sbt_records_;
   OptixShaderBindingTable sbt_{};
-  PinnedUpload<OptixLaunchParams> params_;
+  cuda::PinnedUpload<OptixLaunchParams> params_;
   OptixLaunchParams last_params_{};
   bool params_uploaded_ = false;
 };

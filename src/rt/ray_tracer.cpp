@@ -38,6 +38,8 @@ void check_backend_built(std::string_view backend) {
 #endif
 }
 
+bool is_gpu_backend(std::string_view backend) { return backend == "cuda" || backend == "optix"; }
+
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend) {
   check_backend_built(backend);
   if (backend == "cpu") return std::make_unique<CpuRayTracer>();

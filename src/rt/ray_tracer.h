@@ -130,6 +130,9 @@ public:
 // "cpu", "embree", "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU) or "optix"
 // (optix/backend.h); glint::Error listing the known names otherwise, or check_backend_built's.
 std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
+// True for the backends whose structures live on the GPU and that trace through DeviceTracing ("cuda",
+// "optix"): they need a CUDA GPU, trace the GL-shared ray list in place and follow the GPU deformer.
+bool is_gpu_backend(std::string_view backend);
 // glint::Error, one line saying how to enable it, for a backend this build lacks (optix without
 // OptiX); nothing otherwise. Lets a command refuse before it writes anything.
 void check_backend_built(std::string_view backend);

@@ -7,7 +7,7 @@
 namespace glint::bench {
 
 std::optional<std::string> backend_unavailable_reason(const std::string& backend) {
-  if (backend == "cuda" || backend == "optix") {
+  if (rt::is_gpu_backend(backend)) {
     std::string why_none;
     if (query_cuda_devices(&why_none).empty())
       return why_none.empty() ? std::string("no CUDA GPU") : why_none;

@@ -3,7 +3,7 @@
 // source is pinned host memory (a pageable source may make cudaMemcpyAsync wait for the stream),
 // and it is overwritten only after the previous copy ran (an event; by then usually long done).
 // Used for the launch parameters and the instance array, which change between frames at most.
-// CUDA runtime header: include it from src/optix/ only.
+// CUDA runtime header: include it from .cu files and src/optix/ only.
 #include "cuda/cuda_check.h"
 #include "cuda/device_buffer.h"
 
@@ -14,7 +14,7 @@
 #include <span>
 #include <type_traits>
 
-namespace glint::optix {
+namespace glint::cuda {
 
 template <typename T>
 class PinnedUpload {
@@ -69,4 +69,4 @@ private:
   cuda::DeviceBuffer<T> device_;
 };
 
-}  // namespace glint::optix
+}  // namespace glint::cuda
