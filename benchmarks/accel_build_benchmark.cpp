@@ -1,0 +1,134 @@
+// CPU build time on the built-in `atrium` scene (618k triangles, every instance flattened to
+// world-space triangles), and where it goes:
+//   LbvhPhases    the lbvh build step by step (triangle boxes, Morton codes and sort, Karras's
+//                 interior nodes, bottom-up boxes and collapse costs, flattening); one counter per
+//                 step, ms per build; `morton_bits` says whether 30-bit codes sufficed
+//   Build/<name>  build_bvh(builder, mesh) whole, as `glint accel-bench` times it
+//   Embree/<q>    Embree 3 at quality low / medium / high over the same triangles
+// GLINT_BENCH_THREADS limits TBB's workers (default: every hardware thread).
+//
+//   ./build/benchmarks/glint_benchmarks --benchmark_filter='LbvhPhases|Build/|Embree/'
+//   (add --benchmark_counters_tabular=true for a table of the counters)
+#include "accel/binary_tree.h"
+#include "accel/build_lbvh.h"
+#include "accel/builder.h"
+#include "accel/bvh_collapse_leaves.h"
+#include "accel/embree_scene.h"
+#include "accel/morton.h"
+#include "accel/primitive_bounds.h"
+#include "scene/presets.h"
+
+#include <benchmark/benchmark.h>
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+namespace glint::accel {
+namespace {
+
+struct BuildFixture {
+  std::vector<vec3> soup;
+  TriangleMesh mesh;
+  std::unique_ptr<tbb::global_control> threads;
+
+  BuildFixture() {
+    if (const char* limit = std::getenv("GLINT_BENCH_THREADS"))
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(std::atoi(limit)));
+    const Scene scene = make_preset("atrium");
+    for (const Instance& instance : scene.instances) {
+      const Mesh& m = scene.meshes[instance.mesh];
+      for (uint32_t index : m.indices) soup.push_back(vec3(instance.transform * vec4(m.positions[index], 1.0f)));
+    }
+    mesh = make_triangle_soup(soup);
+  }
+};
+
+const BuildFixture& fixture() {
+  static const BuildFixture instance;
+  return instance;
+}
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point& start) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+void LbvhPhases(benchmark::State& state) {
+  const TriangleMesh& mesh = fixture().mesh;
+  const BuildOptions options;
+  double boxes_ms = 0, morton_ms = 0, karras_ms = 0, fit_ms = 0, flatten_ms = 0;
+  uint32_t bits = 0;
+  for (auto _ : state) {
+    auto start = Clock::now();
+    detail::ParallelArray<Aabb> boxes(mesh.triangle_count, detail::kForOverwrite);
+    triangle_boxes(mesh, boxes);
+    detail::ParallelArray<vec3> centroids(mesh.triangle_count, detail::kForOverwrite);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t i = r.begin(); i != r.end(); ++i) centroids[i] = boxes[i].center();
+    });
+    const BuildInput input{boxes, centroids};
+    boxes_ms += ms_since(start);
+    const MortonOrder order = sort_by_morton(input.centroids);
+    bits = order.bits;
+    morton_ms += ms_since(start);
+    detail::BinaryTree tree = detail::build_karras_tree(input, order, false);
+    karras_ms += ms_since(start);
+    detail::ParallelArray<detail::SubtreeSummary> summaries = detail::fit_and_summarise_tree(tree, options);
+    fit_ms += ms_since(start);
+    Bvh bvh = detail::flatten_tree(tree, std::move(summaries), options, "lbvh");
+    flatten_ms += ms_since(start);
+    benchmark::DoNotOptimize(bvh.nodes.data());
+  }
+  const auto per_build = [&](double total) {
+    return benchmark::Counter(total / static_cast<double>(state.iterations()));
+  };
+  state.counters["boxes_ms"] = per_build(boxes_ms);
+  state.counters["morton_ms"] = per_build(morton_ms);
+  state.counters["karras_ms"] = per_build(karras_ms);
+  state.counters["fit_ms"] = per_build(fit_ms);
+  state.counters["flatten_ms"] = per_build(flatten_ms);
+  state.counters["morton_bits"] = bits;
+}
+BENCHMARK(LbvhPhases)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+void Build(benchmark::State& state, BvhBuilder builder) {
+  const TriangleMesh& mesh = fixture().mesh;
+  for (auto _ : state) {
+    Bvh bvh = build_bvh(builder, mesh);
+    benchmark::DoNotOptimize(bvh.nodes.data());
+  }
+  state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(mesh.triangle_count) * 1e-6 *
+                                                      static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(Build, lbvh, BvhBuilder::lbvh)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK_CAPTURE(Build, sah, BvhBuilder::sah)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK_CAPTURE(Build, median, BvhBuilder::median)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+void Embree(benchmark::State& state, EmbreeQuality quality) {
+  const TriangleMesh& mesh = fixture().mesh;
+  const EmbreeDevice device;
+  for (auto _ : state) {
+    EmbreeScene scene(device, mesh, quality);
+    benchmark::DoNotOptimize(scene.triangle_count());
+  }
+  state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(mesh.triangle_count) * 1e-6 *
+                                                      static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+BENCHMARK_CAPTURE(Embree, low, EmbreeQuality::low)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK_CAPTURE(Embree, medium, EmbreeQuality::medium)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+BENCHMARK_CAPTURE(Embree, high, EmbreeQuality::high)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+}  // namespace
+}  // namespace glint::accel
