@@ -1,6 +1,7 @@
 #pragma once
 // A built BVH: the node array, the primitive permutation its leaves index, and how it was made.
 #include "accel/bvh_node.h"
+#include "accel/unzeroed_vector.h"
 
 #include <cstdint>
 #include <string>
@@ -9,8 +10,10 @@
 namespace glint::accel {
 
 struct Bvh {
-  std::vector<BvhNode> nodes;         // nodes[0] is the root; empty when there are no primitives
-  std::vector<uint32_t> prim_indices;  // leaf slots -> original primitive index
+  // Builders size these with resize(n) and fill them in parallel (unzeroed_vector.h says why they
+  // are not plain std::vectors).
+  UnzeroedVector<BvhNode> nodes;         // nodes[0] is the root; empty when there are no primitives
+  UnzeroedVector<uint32_t> prim_indices;  // leaf slots -> original primitive index
   // False for structures whose leaves reference split (clipped) primitive references, e.g. SBVH:
   // moving vertices invalidates those, so refit() refuses them.
   bool refittable = true;

@@ -26,8 +26,10 @@ void GpuBvh::upload(const accel::Bvh& bvh, cudaStream_t stream) {
 
 accel::Bvh GpuBvh::download(const char* builder) const {
   accel::Bvh bvh;
-  bvh.nodes = nodes.download();
-  bvh.prim_indices = prim_indices.download();
+  const std::vector<accel::BvhNode> node_list = nodes.download();
+  const std::vector<uint32_t> prim_list = prim_indices.download();
+  bvh.nodes.assign(node_list.begin(), node_list.end());
+  bvh.prim_indices.assign(prim_list.begin(), prim_list.end());
   bvh.depth = depth;
   bvh.refittable = refittable;
   bvh.builder = builder;
