@@ -22,14 +22,25 @@ constexpr size_t kChunkSize = 16384;
 
 using Histogram = std::array<uint32_t, kDigits>;
 
-uint32_t digit_of(uint64_t key, uint32_t shift) { return static_cast<uint32_t>(key >> shift) & (kDigits - 1); }
+// The digit of `key` at `shift`, keeping only bits below high_bit (a last digit may reach past it).
+uint32_t digit_of(uint64_t key, uint32_t shift, uint32_t high_bit) {
+  const uint64_t below_high = high_bit == 64 ? key : key & ((uint64_t{1} << high_bit) - 1);
+  return static_cast<uint32_t>(below_high >> shift) & (kDigits - 1);
+}
 
 }  // namespace
 
 void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t key_bits) {
+  if (key_bits < 1 || key_bits > 64) fail("accel: radix_sort_pairs: key_bits must be in [1, 64], got {}", key_bits);
+  radix_sort_pairs_by_bits(keys, values, 0, key_bits);
+}
+
+void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
+                              uint32_t high_bit) {
   if (keys.size() != values.size())
     fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
-  if (key_bits < 1 || key_bits > 64) fail("accel: radix_sort_pairs: key_bits must be in [1, 64], got {}", key_bits);
+  if (low_bit >= high_bit || high_bit > 64)
+    fail("accel: radix_sort_pairs: bits [{}, {}) are not a range within [0, 64)", low_bit, high_bit);
   if (keys.size() >= (size_t{1} << 32)) fail("accel: radix_sort_pairs: {} pairs, at most 2^32 - 1", keys.size());
   const size_t count = keys.size();
   if (count < 2) return;
@@ -47,12 +58,12 @@ void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint
     return std::pair{chunk * kChunkSize, std::min(count, (chunk + 1) * kChunkSize)};
   };
 
-  for (uint32_t shift = 0; shift < key_bits; shift += kDigitBits) {
+  for (uint32_t shift = low_bit; shift < high_bit; shift += kDigitBits) {
     tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
       Histogram& histogram = offsets[chunk];
       histogram.fill(0);
       const auto [begin, end] = chunk_range(chunk);
-      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys_in[i], shift)];
+      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys_in[i], shift, high_bit)];
     });
 
     // Exclusive prefix sum in (digit, chunk) order: all keys with a smaller digit come first, then
@@ -75,7 +86,7 @@ void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint
       Histogram& next = offsets[chunk];
       const auto [begin, end] = chunk_range(chunk);
       for (size_t i = begin; i != end; ++i) {
-        const uint32_t slot = next[digit_of(keys_in[i], shift)]++;
+        const uint32_t slot = next[digit_of(keys_in[i], shift, high_bit)]++;
         keys_out[slot] = keys_in[i];
         values_out[slot] = values_in[i];
       }

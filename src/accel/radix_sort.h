@@ -15,4 +15,10 @@ namespace glint::accel {
 // skipped, so sorting 30-bit codes costs 4 passes and already sorted digits cost no scatter.
 void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t key_bits);
 
+// The same, ordering by bits [low_bit, high_bit) of the keys only (0 <= low_bit < high_bit <= 64);
+// the other bits do not take part and need not be zero, and keys are moved whole. Pairs equal in
+// those bits keep their order.
+void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
+                              uint32_t high_bit);
+
 }  // namespace glint::accel

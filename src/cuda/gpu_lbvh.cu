@@ -1,6 +1,6 @@
 #include "cuda/gpu_lbvh.cuh"
 
-#include "accel/radix_tree_split.h"
+#include "cuda/radix_tree_split.h"
 
 namespace glint::cuda::detail {
 namespace {
@@ -20,10 +20,9 @@ struct KeyPrefix {
   }
 };
 
-// The paper's Figure 4 for interior node i (one thread each, i in [0, count - 1); the search is
-// accel/radix_tree_split.h, shared with the CPU LBVH). Interior node i is tree node count + i; the
-// root is interior 0. Each node has one parent, so the parent writes never race. Subtree sizes follow
-// from the key range.
+// The paper's Figure 4 for interior node i (one thread each, i in [0, count - 1); the search is in
+// cuda/radix_tree_split.h). Interior node i is tree node count + i; the root is interior 0. Each
+// node has one parent, so the parent writes never race. Subtree sizes follow from the key range.
 __global__ void radix_tree_kernel(KeyPrefix delta, uint32_t leaf_count, uint2* children, uint32_t* parents,
                                   uint32_t* sizes) {
   const uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;

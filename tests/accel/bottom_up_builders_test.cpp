@@ -16,10 +16,12 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace glint::accel {
@@ -64,6 +66,30 @@ std::vector<uint32_t> sorted_prims(const BinaryTree& tree) {
   return prims;
 }
 
+// Length of the common prefix of sorted keys a and b: the code, then the 32-bit position.
+int key_prefix(const MortonOrder& order, uint32_t a, uint32_t b) {
+  const uint64_t x = order.codes[a], y = order.codes[b];
+  return x != y ? std::countl_zero(x ^ y) : 64 + std::countl_zero(a ^ b);
+}
+
+// Checks the tree against the definition of Karras's radix tree, by brute force: every interior node
+// over keys [first, last] splits where the common prefix of neighbouring keys is shortest in that
+// range (one such place exists: the keys share a prefix and differ in the next bit), and is stored
+// at leaf_count + split. Returns the node's key range.
+std::pair<uint32_t, uint32_t> check_radix_node(const BinaryTree& tree, const MortonOrder& order, uint32_t node) {
+  const detail::TreeNode& n = tree.nodes[node];
+  if (n.is_leaf()) return {node, node};
+  const auto [first, left_last] = check_radix_node(tree, order, n.left);
+  const auto [right_first, last] = check_radix_node(tree, order, n.right);
+  EXPECT_EQ(right_first, left_last + 1);
+  uint32_t shortest = first;
+  for (uint32_t b = first + 1; b < last; ++b)
+    if (key_prefix(order, b, b + 1) < key_prefix(order, shortest, shortest + 1)) shortest = b;
+  EXPECT_EQ(left_last, shortest) << "split of the node over keys [" << first << ", " << last << "]";
+  EXPECT_EQ(node, tree.leaf_count + left_last);
+  return {first, last};
+}
+
 std::vector<uint32_t> iota_vector(uint32_t count) {
   std::vector<uint32_t> values(count);
   for (uint32_t i = 0; i < count; ++i) values[i] = i;
@@ -95,9 +121,11 @@ TEST(KarrasTree, InOrderLeavesFollowTheSortedCodesEvenWithDuplicates) {
       const PrimitiveBounds bounds = unit_boxes_along_x(count);
       const BinaryTree tree = detail::build_karras_tree(bounds.input(), order);
       ASSERT_EQ(tree.nodes.size(), 2 * size_t{count} - 1);
-      EXPECT_EQ(tree.root, count);
       // A radix tree over sorted keys lists its leaves in key order.
       EXPECT_EQ(checked_leaf_order(tree), iota_vector(count)) << count << " leaves, " << distinct << " codes";
+      const auto [first, last] = check_radix_node(tree, order, tree.root);
+      EXPECT_EQ(first, 0u);
+      EXPECT_EQ(last, count - 1);
       if (distinct == 1) {  // all codes equal: the index tie-break gives a balanced tree
         const auto summaries = detail::summarise_tree(tree, BuildOptions{});
         BuildOptions single;

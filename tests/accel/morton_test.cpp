@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace glint::accel {
@@ -84,6 +88,57 @@ TEST(Morton, SixtyThreeBitsSeparateWhatThirtyBitsCannot) {
   EXPECT_EQ(coarse.bits, 30u);
   for (size_t rank = 1; rank + 2 < coarse.prims.size(); ++rank)  // equal codes keep index order
     EXPECT_LT(coarse.prims[rank], coarse.prims[rank + 1]);
+}
+
+TEST(Morton, TheTopThirtyOfSixtyThreeBitsAreTheThirtyBitCode) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(-0.1f, 1.1f);  // some outside, to cover the clamping
+  for (int i = 0; i < 100000; ++i) {
+    const vec3 p(unit(rng), unit(rng), unit(rng));
+    ASSERT_EQ(morton63(p) >> 33, uint64_t{morton30(p)}) << p.x << " " << p.y << " " << p.z;
+  }
+  for (const float edge : {0.0f, 1.0f, 1023.0f / 1024.0f, std::nextafter(1023.0f / 1024.0f, 0.0f), 0.5f})
+    EXPECT_EQ(morton63(vec3(edge)) >> 33, uint64_t{morton30(vec3(edge))}) << edge;
+}
+
+// The order sort_by_morton must give, by brute force: stable by code, 30 or 63 bits.
+std::vector<uint32_t> stable_order(std::span<const vec3> centroids, uint32_t bits) {
+  Aabb box;
+  for (const vec3& c : centroids) box.extend(c);
+  const vec3 scale = unit_cube_scale(box.extent());
+  std::vector<uint64_t> codes;
+  for (const vec3& c : centroids) {
+    const vec3 unit = (c - box.min) * scale;
+    codes.push_back(bits == 30 ? uint64_t{morton30(unit)} : morton63(unit));
+  }
+  std::vector<uint32_t> prims(centroids.size());
+  std::iota(prims.begin(), prims.end(), 0u);
+  std::stable_sort(prims.begin(), prims.end(), [&](uint32_t a, uint32_t b) { return codes[a] < codes[b]; });
+  return prims;
+}
+
+TEST(Morton, SortEqualsAStableSortByTheChosenCode) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  // Spread points (30 bits suffice), then points packed into a few 30-bit cells so that runs of
+  // equal 30-bit codes have every length: short ones (insertion sort) and long ones (radix sort).
+  std::vector<vec3> spread(50000);
+  for (vec3& p : spread) p = vec3(unit(rng), unit(rng), unit(rng));
+  std::vector<vec3> clustered{vec3(0.0f), vec3(1.0f)};
+  for (const int run : {2, 3, 40, 64, 65, 300, 5000, 40000}) {
+    const vec3 cell(unit(rng), unit(rng), unit(rng));
+    for (int i = 0; i < run; ++i) clustered.push_back(cell + vec3(unit(rng), unit(rng), unit(rng)) * 1e-4f);
+  }
+  std::shuffle(clustered.begin(), clustered.end(), rng);
+  for (const auto& [centroids, bits] : {std::pair{spread, 30u}, std::pair{clustered, 63u}}) {
+    const MortonOrder order = sort_by_morton(centroids);
+    EXPECT_EQ(order.bits, bits);
+    EXPECT_EQ(std::vector<uint32_t>(order.prims.begin(), order.prims.end()), stable_order(centroids, bits));
+    EXPECT_TRUE(std::is_sorted(order.codes.begin(), order.codes.end()));
+    if (bits == 30) {
+      EXPECT_LT(*std::max_element(order.codes.begin(), order.codes.end()), uint64_t{1} << 30);
+    }
+  }
 }
 
 TEST(Morton, FlatAxesAndBadCentroids) {

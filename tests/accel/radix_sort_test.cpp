@@ -46,6 +46,32 @@ TEST(RadixSort, MatchesStdSortAndIsStable) {
   }
 }
 
+TEST(RadixSort, ByBitsOrdersByThoseBitsAloneAndIsStable) {
+  for (const auto& [low, high] : {std::pair{33u, 64u}, std::pair{0u, 33u}, std::pair{5u, 12u}, std::pair{60u, 64u}}) {
+    std::vector<uint64_t> keys = random_keys(low * 100 + high, 50000, 64, 20000);
+    std::vector<uint32_t> values(keys.size());
+    std::iota(values.begin(), values.end(), 0u);
+    const auto bits_of = [&](uint64_t key) {
+      const uint64_t below_high = high == 64 ? key : key & ((uint64_t{1} << high) - 1);
+      return below_high >> low;
+    };
+    std::vector<std::pair<uint64_t, uint32_t>> expected;
+    for (size_t i = 0; i < keys.size(); ++i) expected.emplace_back(keys[i], values[i]);
+    std::stable_sort(expected.begin(), expected.end(), [&](const auto& a, const auto& b) {
+      return bits_of(a.first) < bits_of(b.first);
+    });
+    radix_sort_pairs_by_bits(keys, values, low, high);
+    for (size_t i = 0; i < keys.size(); ++i) {
+      ASSERT_EQ(keys[i], expected[i].first) << "bits [" << low << ", " << high << ") at " << i;
+      ASSERT_EQ(values[i], expected[i].second) << "bits [" << low << ", " << high << ") at " << i;
+    }
+  }
+  std::vector<uint64_t> keys(4);
+  std::vector<uint32_t> values(4);
+  EXPECT_THROW(radix_sort_pairs_by_bits(keys, values, 10, 10), Error);
+  EXPECT_THROW(radix_sort_pairs_by_bits(keys, values, 0, 65), Error);
+}
+
 TEST(RadixSort, SortedAndReversedInputs) {
   std::vector<uint64_t> keys(70000);
   std::iota(keys.begin(), keys.end(), uint64_t{1} << 40);
