@@ -15,19 +15,6 @@ ParallelArray<SubtreeSummary> summarise_tree(const BinaryTree& tree, const Build
   return summaries;
 }
 
-ParallelArray<SubtreeSummary> fit_and_summarise_tree(BinaryTree& tree, const BuildOptions& options) {
-  ParallelArray<SubtreeSummary> summaries(tree.nodes.size(), kForOverwrite);  // the sweep visits every node
-  visit_bottom_up(
-      tree, [&](uint32_t leaf) { summaries[leaf] = summarise_leaf(tree.nodes[leaf].box, options); },
-      [&](uint32_t node) {
-        TreeNode& n = tree.nodes[node];
-        n.box = tree.nodes[n.left].box;
-        n.box.extend(tree.nodes[n.right].box);
-        summaries[node] = summarise_interior(n.box, summaries[n.left], summaries[n.right], options);
-      });
-  return summaries;
-}
-
 void fit_interior_boxes(BinaryTree& tree) {
   visit_bottom_up(
       tree, [](uint32_t) {},

@@ -104,10 +104,6 @@ void visit_bottom_up(const BinaryTree& tree, VisitLeaf&& visit_leaf, VisitInteri
 // Summaries of every node (see SubtreeSummary), computed bottom-up in parallel.
 ParallelArray<SubtreeSummary> summarise_tree(const BinaryTree& tree, const BuildOptions& options);
 
-// fit_interior_boxes and summarise_tree in one bottom-up sweep instead of two (only the leaf boxes
-// need to be set).
-ParallelArray<SubtreeSummary> fit_and_summarise_tree(BinaryTree& tree, const BuildOptions& options);
-
 // Interior boxes as the union of their children's, bottom-up in parallel (leaf boxes must be set).
 void fit_interior_boxes(BinaryTree& tree);
 

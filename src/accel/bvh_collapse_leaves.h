@@ -22,7 +22,7 @@ bool limit_tree_depth(BinaryTree& tree, std::span<const SubtreeSummary> summarie
 // so the output is the same whatever the scheduling. Sets nodes, prim_indices, depth and builder.
 Bvh flatten_tree(BinaryTree& tree, const BuildOptions& options, const std::string& builder);
 
-// The same with the tree's summaries already computed (summarise_tree or fit_and_summarise_tree of
+// The same with the tree's summaries already computed (summarise_tree, or build_karras_tree's, of
 // this tree and options), which saves a bottom-up sweep.
 Bvh flatten_tree(BinaryTree& tree, ParallelArray<SubtreeSummary> summaries, const BuildOptions& options,
                  const std::string& builder);
