@@ -46,6 +46,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   render::FramePipelineSettings settings;
   settings.reflections = render::parse_reflection_mode(options.reflections);
   settings.raster.shadow_map_size = options.shadow_map_size;
+  settings.raster.shadow_cube_draw = render::parse_shadow_cube_draw(options.shadow_cube_draw);
   settings.ssr.max_steps = options.ssr_max_steps;
   settings.ssr.thickness = options.ssr_thickness;
   settings.ssr.confidence_threshold = options.ssr_confidence;
@@ -157,6 +158,12 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--shadow-map-size", options.shadow_map_size, "Shadow cube map face size in texels")
       ->check(CLI::Range(16, 8192))
+      ->capture_default_str();
+  command
+      ->add_option("--shadow-cube-draw", options.shadow_cube_draw,
+                   "How the shadow cube map's faces are drawn: per-face (six draws) or layered (one draw through a "
+                   "geometry shader); same shadows, different speed (docs/perf.md)")
+      ->check(CLI::IsMember({"per-face", "layered"}))
       ->capture_default_str();
   command->add_option("--ssr-max-steps", options.ssr_max_steps, "Most screen-space march steps per pixel")
       ->check(CLI::Range(1, 4096))

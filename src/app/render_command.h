@@ -32,6 +32,7 @@ struct RenderOptions {
   float exposure = 1.0f;
   std::string tone_map = "aces";
   int shadow_map_size = 1024;
+  std::string shadow_cube_draw = "per-face";
   int ssr_max_steps = 256;
   float ssr_thickness = 0.5f;
   float ssr_confidence = 0.9f;

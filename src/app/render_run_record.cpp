@@ -38,6 +38,7 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"exposure", options.exposure},
           {"tone_map", options.tone_map},
           {"shadow_map_size", options.shadow_map_size},
+          {"shadow_cube_draw", options.shadow_cube_draw},
           {"ssr_max_steps", options.ssr_max_steps},
           {"ssr_thickness", options.ssr_thickness},
           {"ssr_confidence", options.ssr_confidence}};

@@ -8,19 +8,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace glint::render {
 namespace {
-
-// glMultiDrawElementsIndirect's command layout (fixed by the GL specification).
-struct DrawElementsIndirectCommand {
-  GLuint count;
-  GLuint instance_count;
-  GLuint first_index;
-  GLint base_vertex;
-  GLuint base_instance;
-};
 
 GpuMaterial to_gpu(const Material& material) {
   GpuMaterial gpu;
@@ -64,7 +56,7 @@ GpuScene::GpuScene(const Scene& scene, const GpuSceneOptions& options) {
 
   for (const Material& material : scene.materials) material_data_.push_back(to_gpu(material));
 
-  std::vector<DrawElementsIndirectCommand> commands;
+  std::vector<DrawElementsIndirectCommand>& commands = draw_command_data_;
   std::vector<std::uint32_t> instance_ids;
   for (std::size_t i = 0; i < scene.instances.size(); ++i) {
     const Instance& instance = scene.instances[i];
@@ -176,12 +168,17 @@ void GpuScene::bind_resources() const {
   glBindTextureUnit(kMaterialTextureUnit, texture_array_.id());
 }
 
-void GpuScene::draw_all_instances() const {
-  if (instance_data_.empty()) return;
+void GpuScene::draw_all_instances() const { draw_commands(draw_commands_.id(), 0, instance_data_.size()); }
+
+void GpuScene::draw_commands(GLuint command_buffer, std::size_t first, std::size_t count) const {
+  if (count == 0) return;
   bind_resources();
   glBindVertexArray(vertex_array_.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draw_commands_.id());
-  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(instance_data_.size()), 0);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_buffer);
+  // The offset into the bound indirect buffer travels as a pointer (GL's convention).
+  const auto offset = static_cast<std::uintptr_t>(first * sizeof(DrawElementsIndirectCommand));
+  glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, reinterpret_cast<const void*>(offset),
+                              static_cast<GLsizei>(count), 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
 }

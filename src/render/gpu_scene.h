@@ -67,6 +67,16 @@ struct GpuMaterial {
 };
 static_assert(sizeof(GpuMaterial) == 64);
 
+// glMultiDrawElementsIndirect's command layout (fixed by the GL specification).
+struct DrawElementsIndirectCommand {
+  GLuint count;
+  GLuint instance_count;
+  GLuint first_index;
+  GLint base_vertex;
+  GLuint base_instance;
+};
+static_assert(sizeof(DrawElementsIndirectCommand) == 20);
+
 struct GpuSceneOptions {
   int max_texture_layer_size = 1024;  // layers are square: the largest texture side, clamped to this
 };
@@ -86,6 +96,11 @@ public:
   // 0 = vec4 position_u, 1 = vec4 normal_v, 2 = uint instance index (into the instance buffer).
   // Binds the scene's resources and vertex array first.
   void draw_all_instances() const;
+  // The same for commands [first, first + count) of another indirect buffer holding commands taken
+  // from draw_command_data() (a subset of the instances, as ShadowCubePass culls per face).
+  void draw_commands(GLuint command_buffer, std::size_t first, std::size_t count) const;
+  // Instance i's draw command, in instance order: what draw_all_instances draws.
+  const std::vector<DrawElementsIndirectCommand>& draw_command_data() const { return draw_command_data_; }
 
   GLuint vertex_buffer() const { return vertices_.id(); }
   GLuint index_buffer() const { return indices_.id(); }
@@ -108,6 +123,7 @@ private:
   std::vector<GpuMeshRange> mesh_range_data_;
   std::vector<GpuInstance> instance_data_;
   std::vector<GpuMaterial> material_data_;
+  std::vector<DrawElementsIndirectCommand> draw_command_data_;
   GlBuffer vertices_, indices_, mesh_ranges_, instances_, materials_;
   GlBuffer instance_ids_;      // 0, 1, 2, ...: per-instance attribute 2, picked by baseInstance
   GlBuffer draw_commands_;     // DrawElementsIndirectCommand per instance

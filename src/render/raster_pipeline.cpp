@@ -15,6 +15,15 @@ const RasterSettings& validated(const RasterSettings& settings) {
   return settings;
 }
 
+std::vector<std::optional<Aabb>> static_instance_bounds(const Scene& scene) {
+  std::vector<std::optional<Aabb>> bounds;
+  for (const Instance& instance : scene.instances) {
+    const Mesh& mesh = scene.meshes[instance.mesh];
+    bounds.push_back(mesh.deformable ? std::nullopt : std::optional(transform_aabb(instance.transform, mesh.bounds())));
+  }
+  return bounds;
+}
+
 GpuSceneOptions gpu_scene_options(const RasterSettings& settings) {
   GpuSceneOptions options;
   options.max_texture_layer_size = settings.max_texture_layer_size;
@@ -30,9 +39,10 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
       targets_(width, height),
       frame_constants_buffer_(create_buffer(sizeof(FrameConstants), nullptr, GL_DYNAMIC_STORAGE_BIT)),
       gbuffer_(targets_),
-      shadow_cube_(settings.shadow_map_size),
+      shadow_cube_(settings.shadow_map_size, settings.shadow_cube_draw),
       shadow_mask_(targets_),
-      lighting_(targets_) {
+      lighting_(targets_),
+      static_instance_bounds_(static_instance_bounds(scene)) {
   check_gl("raster pipeline set-up");
 }
 
@@ -47,7 +57,7 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
   gbuffer_.run(gpu_scene_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
-  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds());
+  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds(), static_instance_bounds_);
   shadow_mask_.run(shadow_cube_, settings_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "light");

@@ -21,6 +21,9 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
+#include <optional>
+#include <vector>
+
 namespace glint::render {
 
 // Every image the pipeline writes, for readback and debug views.
@@ -69,6 +72,9 @@ private:
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;
+  // World boxes of the instances for the shadow pass's per-face culling; nullopt for instances of
+  // deformable meshes, whose vertices may move on the GPU where these boxes would not follow.
+  std::vector<std::optional<Aabb>> static_instance_bounds_;
 };
 
 }  // namespace glint::render

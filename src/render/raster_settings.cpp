@@ -13,6 +13,20 @@ void require_non_negative(float value, const char* field) {
 
 }  // namespace
 
+std::string_view shadow_cube_draw_name(ShadowCubeDraw draw) {
+  switch (draw) {
+    case ShadowCubeDraw::per_face: return "per-face";
+    case ShadowCubeDraw::layered: return "layered";
+  }
+  return "unknown";
+}
+
+ShadowCubeDraw parse_shadow_cube_draw(std::string_view name) {
+  for (const ShadowCubeDraw draw : {ShadowCubeDraw::per_face, ShadowCubeDraw::layered})
+    if (shadow_cube_draw_name(draw) == name) return draw;
+  fail("raster settings: unknown shadow cube draw '{}' (known: per-face, layered)", name);
+}
+
 void RasterSettings::validate() const {
   if (shadow_map_size < 1) fail("raster settings: shadow_map_size = {} must be at least 1", shadow_map_size);
   if (max_texture_layer_size < 1)

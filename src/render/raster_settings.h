@@ -1,10 +1,24 @@
 #pragma once
 // Tunables of the raster passes. Shadow sizes are in cube-map texels at the receiver's distance, so
 // they scale with distance from the light and with shadow_map_size (docs/render.md explains them).
+#include <string_view>
+
 namespace glint::render {
+
+// How the shadow cube map's six faces are drawn (both give the same depths, tests check it):
+//   per_face  six draws of the scene, each into one face with that face's projection
+//   layered   one draw; a geometry shader sends each triangle to the faces it may touch
+// per_face is the default: on the H100, geometry-shader amplification cost more than drawing the
+// scene six times (docs/perf.md, "Shadow cube map").
+enum class ShadowCubeDraw { per_face, layered };
+
+// "per-face", "layered"; parse_shadow_cube_draw is the inverse (glint::Error naming the known ones).
+std::string_view shadow_cube_draw_name(ShadowCubeDraw draw);
+ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
 
 struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels
+  ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
   float pcf_radius_texels = 1.5f;     // 0 = one shadow sample (hard edges), else 20-sample PCF
   float constant_bias_texels = 0.5f;  // distance bias at normal incidence
   float slope_bias_texels = 1.0f;     // times tan(angle between normal and light) x (1 + PCF radius)

@@ -25,9 +25,40 @@ std::array<mat4, 6> cube_face_view_projections(vec3 light, float near_distance, 
   return result;
 }
 
-ShadowCubePass::ShadowCubePass(int size)
-    : size_(size), program_(ShaderProgram::from_embedded(
-                       {"shadow_cube.vert.glsl", "shadow_cube.geom.glsl", "shadow_cube.frag.glsl"})) {
+namespace {
+
+// Whether `box` may reach into the frustum of `view_projection`: false when all eight corners are
+// outside one clip plane (-w <= x, y, z <= w). Each plane is a half-space of world space (clip
+// coordinates are linear in the point), so the whole box is outside with its corners: exact for
+// culling, never drops anything visible.
+bool box_may_be_in_frustum(const Aabb& box, const mat4& view_projection) {
+  std::array<vec4, 8> clip;
+  for (int corner = 0; corner < 8; ++corner) {
+    const vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                 (corner & 4) ? box.max.z : box.min.z);
+    clip[static_cast<std::size_t>(corner)] = view_projection * vec4(p, 1.0f);
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    bool all_above = true, all_below = true;
+    for (const vec4& c : clip) {
+      all_above = all_above && c[axis] > c.w;
+      all_below = all_below && c[axis] < -c.w;
+    }
+    if (all_above || all_below) return false;
+  }
+  return true;
+}
+
+ShaderProgram shadow_program(ShadowCubeDraw draw) {
+  if (draw == ShadowCubeDraw::layered)
+    return ShaderProgram::from_embedded({"shadow_cube.vert.glsl", "shadow_cube.geom.glsl", "shadow_cube.frag.glsl"});
+  return ShaderProgram::from_embedded({"shadow_cube_face.vert.glsl", "shadow_cube.frag.glsl"});
+}
+
+}  // namespace
+
+ShadowCubePass::ShadowCubePass(int size, ShadowCubeDraw draw)
+    : size_(size), draw_(draw), program_(shadow_program(draw)) {
   GLint max_size = 0;
   glGetIntegerv(GL_MAX_CUBE_MAP_TEXTURE_SIZE, &max_size);
   if (size < 1 || size > max_size) fail("shadow cube map: size {} is outside 1..{}", size, max_size);
@@ -42,10 +73,22 @@ ShadowCubePass::ShadowCubePass(int size)
   glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, id, 0);  // layered: all six faces
   glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
   require_framebuffer_complete(framebuffer_, "shadow cube map");
+  if (draw_ == ShadowCubeDraw::per_face)
+    for (int face = 0; face < 6; ++face) {
+      GlFramebuffer& framebuffer = face_framebuffers_[static_cast<std::size_t>(face)];
+      framebuffer = create_framebuffer();
+      glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, id, 0, face);
+      glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
+      require_framebuffer_complete(framebuffer, "shadow cube map face");
+    }
   check_gl("shadow cube pass set-up");
 }
 
-void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds) {
+void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds,
+                         std::span<const std::optional<Aabb>> instance_bounds) {
+  const std::size_t instances = scene.draw_command_data().size();
+  if (!instance_bounds.empty() && instance_bounds.size() != instances)
+    fail("shadow cube map: {} instance bounds for {} instances", instance_bounds.size(), instances);
   GlPassScope scope("shadow_cube");
   // Far: the farthest corner of the scene's box from the light (plus a margin for deforming
   // meshes), so every receiver's distance fits in 0..1.
@@ -60,27 +103,61 @@ void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb&
   far_distance_ = farthest * 1.1f;
   const float near_distance = far_distance_ * 1e-5f;
   const std::array<mat4, 6> faces = cube_face_view_projections(light_position, near_distance, far_distance_);
+  program_.set_uniform("light_position", light_position);
+  program_.set_uniform("inverse_far_distance", 1.0f / far_distance_);
+
+  const float cleared = 1.0f;
+  glDepthMask(GL_TRUE);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &cleared);  // all six faces
+  glViewport(0, 0, size_, size_);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  program_.use();
+  if (draw_ == ShadowCubeDraw::layered)
+    draw_layered(scene, faces);
+  else
+    draw_per_face(scene, faces, instance_bounds);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  check_gl("shadow cube pass");
+}
+
+void ShadowCubePass::draw_layered(const GpuScene& scene, const std::array<mat4, 6>& faces) {
   for (int face = 0; face < 6; ++face) {
     std::string name = "face_view_projection[";
     name += std::to_string(face);
     name += ']';
     program_.set_uniform(name, faces[static_cast<std::size_t>(face)]);
   }
-  program_.set_uniform("light_position", light_position);
-  program_.set_uniform("inverse_far_distance", 1.0f / far_distance_);
-
-  const float cleared = 1.0f;
-  glDepthMask(GL_TRUE);
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &cleared);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, size_, size_);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  program_.use();
   scene.draw_all_instances();
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  check_gl("shadow cube pass");
+}
+
+void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces,
+                                   std::span<const std::optional<Aabb>> instance_bounds) {
+  // Each face's commands: the instances that may touch it, in instance order. One upload per run
+  // into a buffer made once per instance count.
+  const std::vector<DrawElementsIndirectCommand>& all = scene.draw_command_data();
+  face_commands_.resize(6 * all.size());
+  for (std::size_t face = 0; face < 6; ++face) {
+    std::uint32_t count = 0;
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (instance_bounds.empty() || !instance_bounds[i] || box_may_be_in_frustum(*instance_bounds[i], faces[face]))
+        face_commands_[face * all.size() + count++] = all[i];
+    face_instance_counts_[face] = count;
+  }
+  const std::size_t bytes = face_commands_.size() * sizeof(DrawElementsIndirectCommand);
+  if (bytes == 0) return;
+  if (face_command_bytes_ < bytes) {
+    face_command_buffer_ = create_buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    face_command_bytes_ = bytes;
+  }
+  glNamedBufferSubData(face_command_buffer_.id(), 0, static_cast<GLsizeiptr>(bytes), face_commands_.data());
+  for (std::size_t face = 0; face < 6; ++face) {
+    program_.set_uniform("face_view_projection", faces[face]);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, face_framebuffers_[face].id());
+    scene.draw_commands(face_command_buffer_.id(), face * all.size(), face_instance_counts_[face]);
+  }
 }
 
 }  // namespace glint::render

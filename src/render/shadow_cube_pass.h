@@ -1,6 +1,7 @@
 #pragma once
-// ShadowCubePass: omnidirectional shadow map of the point light, all six faces in one layered draw
-// (a geometry shader routes each triangle to the faces it touches).
+// ShadowCubePass: omnidirectional shadow map of the point light: six draws of the scene, one per
+// face, or one layered draw in which a geometry shader routes each triangle to the faces it may
+// touch (ShadowCubeDraw, raster_settings.h); the depths are the same either way.
 //   inputs:  GpuScene, light position, world bounds of the scene (sets the far distance)
 //   outputs: cube_map(): GL_DEPTH_COMPONENT32F cube, size x size per face, holding
 //            distance to the light / far_distance() (1 = nothing within far), nearest filtering
@@ -10,8 +11,14 @@
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "render/raster_settings.h"
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
 
 namespace glint::render {
 
@@ -21,19 +28,38 @@ std::array<mat4, 6> cube_face_view_projections(vec3 light, float near_distance, 
 
 class ShadowCubePass {
 public:
-  explicit ShadowCubePass(int size = 1024);  // throws glint::Error beyond GL_MAX_CUBE_MAP_TEXTURE_SIZE
+  // Throws glint::Error for a size beyond GL_MAX_CUBE_MAP_TEXTURE_SIZE.
+  explicit ShadowCubePass(int size = 1024, ShadowCubeDraw draw = ShadowCubeDraw::per_face);
 
-  void run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds);
+  // instance_bounds, when given (one per instance of `scene`), lets the per-face draw skip the
+  // instances whose world box lies outside a face's frustum; nullopt marks an instance that moves or
+  // deforms, drawn into every face. The layered draw ignores it.
+  void run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds,
+           std::span<const std::optional<Aabb>> instance_bounds = {});
 
   GLuint cube_map() const { return cube_map_.id(); }
   int size() const { return size_; }
   float far_distance() const { return far_distance_; }  // of the last run
+  ShadowCubeDraw draw() const { return draw_; }
+  // Instances drawn into each face by the last per-face run (all of them without instance_bounds).
+  const std::array<std::uint32_t, 6>& face_instance_counts() const { return face_instance_counts_; }
 
 private:
+  void draw_layered(const GpuScene& scene, const std::array<mat4, 6>& faces);
+  void draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces,
+                     std::span<const std::optional<Aabb>> instance_bounds);
+
   int size_;
+  ShadowCubeDraw draw_;
   float far_distance_ = 1.0f;
   GlTexture cube_map_;
-  GlFramebuffer framebuffer_;
+  GlFramebuffer framebuffer_;                   // all six faces (layered): cleared, and the layered draw
+  std::array<GlFramebuffer, 6> face_framebuffers_;  // one face each (per_face)
+  // per_face: each face's instances' draw commands, face f's from f * instance count on.
+  std::vector<DrawElementsIndirectCommand> face_commands_;
+  GlBuffer face_command_buffer_;
+  std::size_t face_command_bytes_ = 0;
+  std::array<std::uint32_t, 6> face_instance_counts_{};
   ShaderProgram program_;
 };
 

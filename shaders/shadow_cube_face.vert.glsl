@@ -1,0 +1,18 @@
+#version 450 core
+// Shadow cube map, one face per draw (ShadowCubeDraw::per_face): the face's view-projection here,
+// no geometry shader. Same arithmetic as shadow_cube.vert.glsl + shadow_cube.geom.glsl, so both ways
+// rasterise the same triangles to the same depths.
+
+#include "include/scene_instances.glsl"
+
+layout(location = 0) in vec4 position_u;
+layout(location = 2) in uint instance_index;
+
+uniform mat4 face_view_projection;  // this draw's face, GL cube-map face order +X..-Z
+
+out vec3 world_position;
+
+void main() {
+  world_position = (instances[instance_index].model * vec4(position_u.xyz, 1.0)).xyz;
+  gl_Position = face_view_projection * vec4(world_position, 1.0);
+}
