@@ -170,9 +170,10 @@ void GpuScene::bind_resources() const {
 
 void GpuScene::draw_all_instances() const { draw_commands(draw_commands_.id(), 0, instance_data_.size()); }
 
-void GpuScene::draw_commands(GLuint command_buffer, std::size_t first, std::size_t count) const {
+void GpuScene::draw_commands(GLuint command_buffer, std::size_t first, std::size_t count, GLuint index_buffer) const {
   if (count == 0) return;
   bind_resources();
+  if (index_buffer != 0) glVertexArrayElementBuffer(vertex_array_.id(), index_buffer);
   glBindVertexArray(vertex_array_.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_buffer);
   // The offset into the bound indirect buffer travels as a pointer (GL's convention).
@@ -181,6 +182,7 @@ void GpuScene::draw_commands(GLuint command_buffer, std::size_t first, std::size
                               static_cast<GLsizei>(count), 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
+  if (index_buffer != 0) glVertexArrayElementBuffer(vertex_array_.id(), indices_.id());
 }
 
 }  // namespace glint::render

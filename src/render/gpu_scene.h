@@ -96,9 +96,10 @@ public:
   // 0 = vec4 position_u, 1 = vec4 normal_v, 2 = uint instance index (into the instance buffer).
   // Binds the scene's resources and vertex array first.
   void draw_all_instances() const;
-  // The same for commands [first, first + count) of another indirect buffer holding commands taken
-  // from draw_command_data() (a subset of the instances, as ShadowCubePass culls per face).
-  void draw_commands(GLuint command_buffer, std::size_t first, std::size_t count) const;
+  // The same for commands [first, first + count) of another indirect buffer, with this scene's
+  // vertices and instances; their first_index counts in `index_buffer` when it is not 0 (another
+  // order of the same triangles, as ShadowChunks keeps), else in the scene's index buffer.
+  void draw_commands(GLuint command_buffer, std::size_t first, std::size_t count, GLuint index_buffer = 0) const;
   // Instance i's draw command, in instance order: what draw_all_instances draws.
   const std::vector<DrawElementsIndirectCommand>& draw_command_data() const { return draw_command_data_; }
 

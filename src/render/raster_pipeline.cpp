@@ -15,15 +15,6 @@ const RasterSettings& validated(const RasterSettings& settings) {
   return settings;
 }
 
-std::vector<std::optional<Aabb>> static_instance_bounds(const Scene& scene) {
-  std::vector<std::optional<Aabb>> bounds;
-  for (const Instance& instance : scene.instances) {
-    const Mesh& mesh = scene.meshes[instance.mesh];
-    bounds.push_back(mesh.deformable ? std::nullopt : std::optional(transform_aabb(instance.transform, mesh.bounds())));
-  }
-  return bounds;
-}
-
 GpuSceneOptions gpu_scene_options(const RasterSettings& settings) {
   GpuSceneOptions options;
   options.max_texture_layer_size = settings.max_texture_layer_size;
@@ -42,7 +33,7 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
       shadow_cube_(settings.shadow_map_size, settings.shadow_cube_draw),
       shadow_mask_(targets_),
       lighting_(targets_),
-      static_instance_bounds_(static_instance_bounds(scene)) {
+      shadow_chunks_(scene, gpu_scene_) {
   check_gl("raster pipeline set-up");
 }
 
@@ -57,7 +48,7 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
   gbuffer_.run(gpu_scene_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
-  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds(), static_instance_bounds_);
+  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds(), &shadow_chunks_);
   shadow_mask_.run(shadow_cube_, settings_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "light");

@@ -16,13 +16,11 @@
 #include "render/lighting_pass.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
+#include "render/shadow_chunks.h"
 #include "render/shadow_cube_pass.h"
 #include "render/shadow_mask_pass.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
-
-#include <optional>
-#include <vector>
 
 namespace glint::render {
 
@@ -72,9 +70,7 @@ private:
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;
-  // World boxes of the instances for the shadow pass's per-face culling; nullopt for instances of
-  // deformable meshes, whose vertices may move on the GPU where these boxes would not follow.
-  std::vector<std::optional<Aabb>> static_instance_bounds_;
+  ShadowChunks shadow_chunks_;  // the scene in pieces for the per-face shadow draw's culling
 };
 
 }  // namespace glint::render

@@ -85,10 +85,7 @@ ShadowCubePass::ShadowCubePass(int size, ShadowCubeDraw draw)
 }
 
 void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds,
-                         std::span<const std::optional<Aabb>> instance_bounds) {
-  const std::size_t instances = scene.draw_command_data().size();
-  if (!instance_bounds.empty() && instance_bounds.size() != instances)
-    fail("shadow cube map: {} instance bounds for {} instances", instance_bounds.size(), instances);
+                         const ShadowChunks* chunks) {
   GlPassScope scope("shadow_cube");
   // Far: the farthest corner of the scene's box from the light (plus a margin for deforming
   // meshes), so every receiver's distance fits in 0..1.
@@ -117,7 +114,7 @@ void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb&
   if (draw_ == ShadowCubeDraw::layered)
     draw_layered(scene, faces);
   else
-    draw_per_face(scene, faces, instance_bounds);
+    draw_per_face(scene, faces, chunks);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   check_gl("shadow cube pass");
 }
@@ -134,17 +131,21 @@ void ShadowCubePass::draw_layered(const GpuScene& scene, const std::array<mat4, 
 }
 
 void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces,
-                                   std::span<const std::optional<Aabb>> instance_bounds) {
-  // Each face's commands: the instances that may touch it, in instance order. One upload per run
-  // into a buffer made once per instance count.
-  const std::vector<DrawElementsIndirectCommand>& all = scene.draw_command_data();
-  face_commands_.resize(6 * all.size());
+                                   const ShadowChunks* chunks) {
+  // Each face's commands: the chunks that may touch it (or every instance), in order. One upload
+  // per run into a buffer made once.
+  const std::size_t candidates = chunks != nullptr ? chunks->chunks().size() : scene.draw_command_data().size();
+  face_commands_.resize(6 * candidates);
   for (std::size_t face = 0; face < 6; ++face) {
+    DrawElementsIndirectCommand* out = face_commands_.data() + face * candidates;
     std::uint32_t count = 0;
-    for (std::size_t i = 0; i < all.size(); ++i)
-      if (instance_bounds.empty() || !instance_bounds[i] || box_may_be_in_frustum(*instance_bounds[i], faces[face]))
-        face_commands_[face * all.size() + count++] = all[i];
-    face_instance_counts_[face] = count;
+    if (chunks == nullptr) {
+      for (const DrawElementsIndirectCommand& command : scene.draw_command_data()) out[count++] = command;
+    } else {
+      for (const ShadowChunk& chunk : chunks->chunks())
+        if (!chunk.world_box || box_may_be_in_frustum(*chunk.world_box, faces[face])) out[count++] = chunk.command;
+    }
+    face_draw_counts_[face] = count;
   }
   const std::size_t bytes = face_commands_.size() * sizeof(DrawElementsIndirectCommand);
   if (bytes == 0) return;
@@ -153,10 +154,11 @@ void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4,
     face_command_bytes_ = bytes;
   }
   glNamedBufferSubData(face_command_buffer_.id(), 0, static_cast<GLsizeiptr>(bytes), face_commands_.data());
+  const GLuint index_buffer = chunks != nullptr ? chunks->index_buffer() : 0;
   for (std::size_t face = 0; face < 6; ++face) {
     program_.set_uniform("face_view_projection", faces[face]);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, face_framebuffers_[face].id());
-    scene.draw_commands(face_command_buffer_.id(), face * all.size(), face_instance_counts_[face]);
+    scene.draw_commands(face_command_buffer_.id(), face * candidates, face_draw_counts_[face], index_buffer);
   }
 }
 

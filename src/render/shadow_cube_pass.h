@@ -1,7 +1,8 @@
 #pragma once
 // ShadowCubePass: omnidirectional shadow map of the point light: six draws of the scene, one per
-// face, or one layered draw in which a geometry shader routes each triangle to the faces it may
-// touch (ShadowCubeDraw, raster_settings.h); the depths are the same either way.
+// face, each skipping the chunks of the scene outside its frustum (shadow_chunks.h), or one layered
+// draw in which a geometry shader routes each triangle to the faces it may touch (ShadowCubeDraw,
+// raster_settings.h); the depths are the same either way.
 //   inputs:  GpuScene, light position, world bounds of the scene (sets the far distance)
 //   outputs: cube_map(): GL_DEPTH_COMPONENT32F cube, size x size per face, holding
 //            distance to the light / far_distance() (1 = nothing within far), nearest filtering
@@ -12,12 +13,11 @@
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
 #include "render/raster_settings.h"
+#include "render/shadow_chunks.h"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
-#include <span>
 #include <vector>
 
 namespace glint::render {
@@ -31,23 +31,21 @@ public:
   // Throws glint::Error for a size beyond GL_MAX_CUBE_MAP_TEXTURE_SIZE.
   explicit ShadowCubePass(int size = 1024, ShadowCubeDraw draw = ShadowCubeDraw::per_face);
 
-  // instance_bounds, when given (one per instance of `scene`), lets the per-face draw skip the
-  // instances whose world box lies outside a face's frustum; nullopt marks an instance that moves or
-  // deforms, drawn into every face. The layered draw ignores it.
-  void run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds,
-           std::span<const std::optional<Aabb>> instance_bounds = {});
+  // `chunks`, when given (made from the same scene), lets the per-face draw skip the chunks whose
+  // world box lies outside a face's frustum; without them every face draws every instance. The
+  // layered draw ignores them.
+  void run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds, const ShadowChunks* chunks = nullptr);
 
   GLuint cube_map() const { return cube_map_.id(); }
   int size() const { return size_; }
   float far_distance() const { return far_distance_; }  // of the last run
   ShadowCubeDraw draw() const { return draw_; }
-  // Instances drawn into each face by the last per-face run (all of them without instance_bounds).
-  const std::array<std::uint32_t, 6>& face_instance_counts() const { return face_instance_counts_; }
+  // Draw commands (chunks, or instances without chunks) of each face in the last per-face run.
+  const std::array<std::uint32_t, 6>& face_draw_counts() const { return face_draw_counts_; }
 
 private:
   void draw_layered(const GpuScene& scene, const std::array<mat4, 6>& faces);
-  void draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces,
-                     std::span<const std::optional<Aabb>> instance_bounds);
+  void draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces, const ShadowChunks* chunks);
 
   int size_;
   ShadowCubeDraw draw_;
@@ -55,11 +53,11 @@ private:
   GlTexture cube_map_;
   GlFramebuffer framebuffer_;                   // all six faces (layered): cleared, and the layered draw
   std::array<GlFramebuffer, 6> face_framebuffers_;  // one face each (per_face)
-  // per_face: each face's instances' draw commands, face f's from f * instance count on.
+  // per_face: each face's draw commands, face f's from f * (chunk or instance count) on.
   std::vector<DrawElementsIndirectCommand> face_commands_;
   GlBuffer face_command_buffer_;
   std::size_t face_command_bytes_ = 0;
-  std::array<std::uint32_t, 6> face_instance_counts_{};
+  std::array<std::uint32_t, 6> face_draw_counts_{};
   ShaderProgram program_;
 };
 

@@ -4,14 +4,15 @@
 #include "raster_test_scene.h"
 #include "render/gpu_scene.h"
 #include "render/raster_settings.h"
+#include "render/shadow_chunks.h"
 #include "render/shadow_cube_pass.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstddef>
-#include <optional>
-#include <span>
+#include <cstdint>
 #include <vector>
 
 namespace glint {
@@ -36,14 +37,6 @@ float texel(const std::vector<float>& cube, int face, int x, int y) {
               static_cast<std::size_t>(x)];
 }
 
-// The instances' world boxes, for the per-face draw's culling.
-std::vector<std::optional<Aabb>> instance_boxes(const Scene& scene) {
-  std::vector<std::optional<Aabb>> boxes;
-  for (const Instance& instance : scene.instances)
-    boxes.push_back(transform_aabb(instance.transform, scene.meshes[instance.mesh].bounds()));
-  return boxes;
-}
-
 TEST_F(ShadowCube, PerFaceAndLayeredDrawsGiveTheSameDepths) {
   std::vector<testing::QuadGeometry> occluders;
   const Scene scene = testing::make_floor_with_occluders(occluders);
@@ -52,7 +45,7 @@ TEST_F(ShadowCube, PerFaceAndLayeredDrawsGiveTheSameDepths) {
   for (const vec3 light : {scene.light.position, vec3(1.7f, 1.2f, -0.4f)}) {
     ShadowCubePass per_face(kFaceSize, ShadowCubeDraw::per_face);
     ShadowCubePass layered(kFaceSize, ShadowCubeDraw::layered);
-    per_face.run(gpu, light, scene.world_bounds(), instance_boxes(scene));
+    per_face.run(gpu, light, scene.world_bounds());
     layered.run(gpu, light, scene.world_bounds());
     ASSERT_EQ(per_face.far_distance(), layered.far_distance());
     const std::vector<float> a = read_cube(per_face), b = read_cube(layered);
@@ -66,25 +59,77 @@ TEST_F(ShadowCube, PerFaceAndLayeredDrawsGiveTheSameDepths) {
   }
 }
 
-TEST_F(ShadowCube, CullingInstancesPerFaceChangesNoDepth) {
+// A floor of many triangles (so it is cut into several chunks) under the test scene's lid and wall,
+// and a deformable copy of the lid beside them.
+Scene chunked_scene(std::vector<testing::QuadGeometry>& occluders) {
+  Scene scene = testing::make_floor_with_occluders(occluders);
+  Mesh& floor = scene.meshes[0];
+  floor.positions.clear();
+  floor.normals.clear();
+  floor.uvs.clear();
+  floor.indices.clear();
+  constexpr int kCells = 120;  // 28,800 triangles: several chunks of at most kShadowChunkTriangles
+  for (int z = 0; z <= kCells; ++z)
+    for (int x = 0; x <= kCells; ++x) {
+      floor.positions.push_back(vec3(-20.0f + 40.0f * static_cast<float>(x) / kCells, 0.0f,
+                                     20.0f - 40.0f * static_cast<float>(z) / kCells));
+      floor.normals.push_back(vec3(0.0f, 1.0f, 0.0f));
+      floor.uvs.push_back(vec2(static_cast<float>(x), static_cast<float>(z)) / float(kCells));
+    }
+  for (int z = 0; z < kCells; ++z)
+    for (int x = 0; x < kCells; ++x) {
+      const auto corner = static_cast<std::uint32_t>(z * (kCells + 1) + x);
+      const std::uint32_t next_row = corner + kCells + 1;
+      for (const std::uint32_t index : {corner, corner + 1, next_row + 1, corner, next_row + 1, next_row})
+        floor.indices.push_back(index);
+    }
+  Mesh moving = scene.meshes[1];
+  moving.deformable = true;
+  moving.deform = SineDeform{};
+  scene.meshes.push_back(moving);
+  Instance instance = scene.instances[1];
+  instance.mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  instance.transform = glm::translate(mat4(1.0f), vec3(6.0f, 0.0f, 0.0f));
+  scene.instances.push_back(instance);
+  return scene;
+}
+
+TEST_F(ShadowCube, ChunksCoverEveryTriangleOnceAndCullingChangesNoDepth) {
   std::vector<testing::QuadGeometry> occluders;
-  const Scene scene = testing::make_floor_with_occluders(occluders);  // floor, lid, wall: 3 instances
+  const Scene scene = chunked_scene(occluders);
   const render::GpuScene gpu(scene);
-  std::vector<std::optional<Aabb>> boxes = instance_boxes(scene);
-  const vec3 light = scene.light.position;  // (0, 4, 0), above the lid (y = 2) and the wall (y <= 1)
-  ShadowCubePass culled(kFaceSize, ShadowCubeDraw::per_face), reference(kFaceSize, ShadowCubeDraw::layered);
-  culled.run(gpu, light, scene.world_bounds(), boxes);
-  reference.run(gpu, light, scene.world_bounds());
-  EXPECT_EQ(read_cube(culled), read_cube(reference));
-  // Nothing reaches above the light: +Y (face 2) draws nothing; -Y (face 3) sees all three.
-  EXPECT_EQ(culled.face_instance_counts()[2], 0u);
-  EXPECT_EQ(culled.face_instance_counts()[3], 3u);
-  // An instance without a box (one that deforms) is drawn into every face.
-  boxes[1] = std::nullopt;
-  culled.run(gpu, light, scene.world_bounds(), boxes);
-  EXPECT_EQ(culled.face_instance_counts()[2], 1u);
-  EXPECT_EQ(read_cube(culled), read_cube(reference));
-  EXPECT_THROW(culled.run(gpu, light, scene.world_bounds(), std::span(boxes).first(2)), Error);
+  const render::ShadowChunks chunks(scene, gpu);
+  // Every instance's triangles once: chunk sizes add up per instance, within the chunk limit.
+  std::vector<std::uint32_t> triangles(scene.instances.size(), 0);
+  for (const render::ShadowChunk& chunk : chunks.chunks()) {
+    const std::uint32_t instance = chunk.command.base_instance;
+    triangles[instance] += chunk.command.count / 3;
+    const bool deformable = scene.meshes[scene.instances[instance].mesh].deformable;
+    EXPECT_EQ(chunk.world_box.has_value(), !deformable);
+    if (!deformable) {
+      EXPECT_LE(chunk.command.count / 3, render::kShadowChunkTriangles);
+    }
+  }
+  for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    EXPECT_EQ(triangles[i], scene.meshes[scene.instances[i].mesh].triangle_count()) << "instance " << i;
+  EXPECT_GE(chunks.chunks().size(), 8u);  // the floor alone makes at least 28,800 / 4096 chunks
+
+  for (const vec3 light : {scene.light.position, vec3(1.7f, 1.2f, -0.4f)}) {
+    ShadowCubePass culled(kFaceSize, ShadowCubeDraw::per_face), reference(kFaceSize, ShadowCubeDraw::layered);
+    culled.run(gpu, light, scene.world_bounds(), &chunks);
+    reference.run(gpu, light, scene.world_bounds());
+    EXPECT_EQ(read_cube(culled), read_cube(reference)) << "light " << light.x << " " << light.y << " " << light.z;
+    // No face needs every chunk (each sees part of the floor), and the deformable lid, which has no
+    // box, is in all six.
+    for (int face = 0; face < 6; ++face) {
+      EXPECT_LT(culled.face_draw_counts()[static_cast<std::size_t>(face)], chunks.chunks().size());
+      EXPECT_GE(culled.face_draw_counts()[static_cast<std::size_t>(face)], 1u);
+    }
+  }
+  // Above the centred light only the deformable lid is drawn.
+  ShadowCubePass culled(kFaceSize, ShadowCubeDraw::per_face);
+  culled.run(gpu, scene.light.position, scene.world_bounds(), &chunks);
+  EXPECT_EQ(culled.face_draw_counts()[2], 1u);
 }
 
 TEST_F(ShadowCube, DepthIsTheDistanceToTheLightOverFar) {
