@@ -37,7 +37,7 @@ layout(std430, binding = 9) readonly buffer RayCounters { uint ray_count; uint r
 uniform float miss_distance;
 uniform float ambient_fraction;
 uniform float texture_layer_size;
-uniform float far_distance;
+uniform float near_distance;
 uniform float texel_angle;
 uniform float pcf_radius_texels;
 uniform float constant_bias_texels;
@@ -121,7 +121,7 @@ void main() {
     albedo *= trilinear_texel(material.texture_layer, uv, lod);
   }
 
-  const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, far_distance, texel_angle,
+  const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, near_distance, texel_angle,
       pcf_radius_texels, constant_bias_texels, slope_bias_texels, normal_offset_texels);
   const float shadow = cube_shadow_visibility(shadow_cube, shadow_settings, position, normal);
   const vec3 to_viewer = -normalize(ray.direction);

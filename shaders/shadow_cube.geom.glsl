@@ -8,7 +8,6 @@ layout(triangle_strip, max_vertices = 18) out;
 uniform mat4 face_view_projection[6];  // light's 90-degree views, GL cube-map face order +X..-Z
 
 in vec3 vertex_world_position[];
-out vec3 world_position;
 
 void main() {
   for (int face = 0; face < 6; ++face) {
@@ -24,7 +23,6 @@ void main() {
     if (outside) continue;
     for (int i = 0; i < 3; ++i) {
       gl_Layer = face;
-      world_position = vertex_world_position[i];
       gl_Position = clip[i];
       EmitVertex();
     }

@@ -10,9 +10,7 @@ layout(location = 2) in uint instance_index;
 
 uniform mat4 face_view_projection;  // this draw's face, GL cube-map face order +X..-Z
 
-out vec3 world_position;
-
 void main() {
-  world_position = (instances[instance_index].model * vec4(position_u.xyz, 1.0)).xyz;
+  vec3 world_position = (instances[instance_index].model * vec4(position_u.xyz, 1.0)).xyz;
   gl_Position = face_view_projection * vec4(world_position, 1.0);
 }

@@ -8,9 +8,9 @@
 
 layout(binding = 0) uniform sampler2D world_position_texture;
 layout(binding = 1) uniform sampler2D world_normal_texture;
-layout(binding = 2) uniform samplerCube shadow_cube;  // linear distance / far_distance
+layout(binding = 2) uniform samplerCube shadow_cube;  // near distance / distance along the face axis
 
-uniform float far_distance;
+uniform float near_distance;     // depth d of the cube stands for near_distance / d
 uniform float texel_angle;         // 2 / cube size: a texel's width per unit distance at a face's centre
 uniform float pcf_radius_texels;   // 0 = one sample
 uniform float constant_bias_texels;
@@ -24,7 +24,7 @@ void main() {
   vec4 position = texelFetch(world_position_texture, pixel, 0);
   if (position.w == 0.0) { shadow = 1.0; return; }
   vec3 n = normalize(texelFetch(world_normal_texture, pixel, 0).xyz);
-  CubeShadowSettings settings = CubeShadowSettings(light_position_range.xyz, far_distance, texel_angle,
+  CubeShadowSettings settings = CubeShadowSettings(light_position_range.xyz, near_distance, texel_angle,
       pcf_radius_texels, constant_bias_texels, slope_bias_texels, normal_offset_texels);
   shadow = cube_shadow_visibility(shadow_cube, settings, position.xyz, n);
 }

@@ -1,5 +1,6 @@
-// Point-light shadow visibility from the shadow cube map (ShadowCubePass: depth = linear distance to
-// the light / far distance), with percentage-closer filtering: the lookup of ShadowMaskPass, shared
+// Point-light shadow visibility from the shadow cube map (ShadowCubePass: depth = near distance / m,
+// m the occluder's distance from the light along the face's axis; 0 = nothing), with
+// percentage-closer filtering: the lookup of ShadowMaskPass, shared
 // with any pass that needs the shadow of other points (ray-traced hits). No uniforms and no sampler
 // are declared here: the includer passes its samplerCube and the settings, so a fragment and a
 // compute shader can both call it with their own bindings.
@@ -13,7 +14,7 @@
 
 struct CubeShadowSettings {
   vec3 light_position;         // world position of the point light (the cube map's centre)
-  float far_distance;          // the distance a depth of 1 stands for
+  float near_distance;         // depth d stands for m = near_distance / d
   float texel_angle;           // 2 / cube size: a texel's width per unit distance at a face's centre
   float pcf_radius_texels;     // 0 = one sample
   float constant_bias_texels;
@@ -31,9 +32,13 @@ const vec3 kCubeShadowPcfOffsets[20] = vec3[](
   vec3(0, 1, 1), vec3(0, -1, 1), vec3(0, -1, -1), vec3(0, 1, -1));
 
 // 1 when the cube map's nearest occluder along `direction` (from the light) is not nearer than
-// receiver_distance.
-float cube_shadow_lit(samplerCube shadow_cube, float far_distance, vec3 direction, float receiver_distance) {
-  float occluder_distance = texture(shadow_cube, direction).r * far_distance;
+// receiver_distance. The texel holds the occluder's distance along the face's axis, which is the
+// largest coordinate of `direction`; along the ray that is length / largest coordinate times more.
+float cube_shadow_lit(samplerCube shadow_cube, float near_distance, vec3 direction, float receiver_distance) {
+  float depth = texture(shadow_cube, direction).r;
+  if (depth <= 0.0) return 1.0;  // nothing in this direction
+  vec3 a = abs(direction);
+  float occluder_distance = near_distance / depth * (length(direction) / max(a.x, max(a.y, a.z)));
   return receiver_distance <= occluder_distance ? 1.0 : 0.0;
 }
 
@@ -59,11 +64,11 @@ float cube_shadow_visibility(samplerCube shadow_cube, CubeShadowSettings setting
   float compare_distance = receiver_distance - bias;
 
   if (settings.pcf_radius_texels <= 0.0)
-    return cube_shadow_lit(shadow_cube, settings.far_distance, direction, compare_distance);
+    return cube_shadow_lit(shadow_cube, settings.near_distance, direction, compare_distance);
   float radius = settings.pcf_radius_texels * texel / sqrt(2.0);  // offsets have length up to sqrt(3)
   float sum = 0.0;
   for (int i = 0; i < 20; ++i)
-    sum += cube_shadow_lit(shadow_cube, settings.far_distance, direction + kCubeShadowPcfOffsets[i] * radius,
+    sum += cube_shadow_lit(shadow_cube, settings.near_distance, direction + kCubeShadowPcfOffsets[i] * radius,
                            compare_distance);
   return sum / 20.0;
 }

@@ -37,7 +37,7 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays)
 
   const ShadowCubePass& cube = *inputs.shadow_cube;
   const RasterSettings& raster = *inputs.raster;
-  program_.set_uniform("far_distance", cube.far_distance());
+  program_.set_uniform("near_distance", cube.near_distance());
   program_.set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
   program_.set_uniform("pcf_radius_texels", raster.pcf_radius_texels);
   program_.set_uniform("constant_bias_texels", raster.constant_bias_texels);

@@ -11,14 +11,20 @@
 
 namespace glint::render {
 
-std::array<mat4, 6> cube_face_view_projections(vec3 light, float near_distance, float far_distance) {
+std::array<mat4, 6> cube_face_view_projections(vec3 light, float near_distance) {
   // Cube-map faces are addressed with t growing downwards (the RenderMan convention GL inherited),
   // hence the -y up vectors for the side faces.
   static const std::array<vec3, 6> directions = {vec3(1, 0, 0), vec3(-1, 0, 0), vec3(0, 1, 0),
                                                  vec3(0, -1, 0), vec3(0, 0, 1), vec3(0, 0, -1)};
   static const std::array<vec3, 6> ups = {vec3(0, -1, 0), vec3(0, -1, 0), vec3(0, 0, 1),
                                           vec3(0, 0, -1), vec3(0, -1, 0), vec3(0, -1, 0)};
-  const mat4 projection = glm::perspective(glm::radians(90.0f), 1.0f, near_distance, far_distance);
+  // 90 degrees, reversed depth with no far plane, for clip depth in [0, 1] (glClipControl): clip
+  // z = near and w = m, the distance along the face's axis, so the stored depth is near / m.
+  mat4 projection(0.0f);
+  projection[0][0] = 1.0f;
+  projection[1][1] = 1.0f;
+  projection[2][3] = -1.0f;
+  projection[3][2] = near_distance;
   std::array<mat4, 6> result;
   for (std::size_t face = 0; face < 6; ++face)
     result[face] = projection * glm::lookAt(light, light + directions[face], ups[face]);
@@ -87,8 +93,8 @@ ShadowCubePass::ShadowCubePass(int size, ShadowCubeDraw draw)
 void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb& world_bounds,
                          const ShadowChunks* chunks) {
   GlPassScope scope("shadow_cube");
-  // Far: the farthest corner of the scene's box from the light (plus a margin for deforming
-  // meshes), so every receiver's distance fits in 0..1.
+  // Near: a tiny fraction of the distance to the farthest corner of the scene's box, so nothing
+  // in the scene is clipped; reversed float depth keeps the same relative precision at any distance.
   float farthest = 1.0f;
   if (!world_bounds.empty())
     for (int corner = 0; corner < 8; ++corner) {
@@ -97,24 +103,26 @@ void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb&
                    (corner & 4) ? world_bounds.max.z : world_bounds.min.z);
       farthest = std::max(farthest, glm::length(p - light_position));
     }
-  far_distance_ = farthest * 1.1f;
-  const float near_distance = far_distance_ * 1e-5f;
-  const std::array<mat4, 6> faces = cube_face_view_projections(light_position, near_distance, far_distance_);
-  program_.set_uniform("light_position", light_position);
-  program_.set_uniform("inverse_far_distance", 1.0f / far_distance_);
+  near_distance_ = farthest * 1e-5f;
+  const std::array<mat4, 6> faces = cube_face_view_projections(light_position, near_distance_);
 
-  const float cleared = 1.0f;
+  // Reversed depth: 0 is "nothing", nearer is larger. Clip depth [0, 1] only for this pass; the
+  // other passes keep GL's default [-1, 1].
+  const float cleared = 0.0f;
   glDepthMask(GL_TRUE);
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &cleared);  // all six faces
   glViewport(0, 0, size_, size_);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(GL_GREATER);
+  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   glDisable(GL_CULL_FACE);
   program_.use();
   if (draw_ == ShadowCubeDraw::layered)
     draw_layered(scene, faces);
   else
     draw_per_face(scene, faces, chunks);
+  glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+  glDepthFunc(GL_LESS);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   check_gl("shadow cube pass");
 }

@@ -13,7 +13,7 @@ ShadowMaskPass::ShadowMaskPass(const RasterTargets& targets)
 
 void ShadowMaskPass::run(const ShadowCubePass& cube, const RasterSettings& settings) {
   GlPassScope scope("shadow_mask");
-  draw_.program().set_uniform("far_distance", cube.far_distance());
+  draw_.program().set_uniform("near_distance", cube.near_distance());
   draw_.program().set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
   draw_.program().set_uniform("pcf_radius_texels", settings.pcf_radius_texels);
   draw_.program().set_uniform("constant_bias_texels", settings.constant_bias_texels);

@@ -1,5 +1,5 @@
 // ShadowCubePass: the per-face and layered draws give the same cube map, texel for texel, and the
-// depths are distances to the light over the far distance (checked where the geometry is known).
+// depths are near / (distance along the face's axis), checked where the geometry is known.
 #include "gl/gl_test_context.h"
 #include "raster_test_scene.h"
 #include "render/gpu_scene.h"
@@ -47,12 +47,12 @@ TEST_F(ShadowCube, PerFaceAndLayeredDrawsGiveTheSameDepths) {
     ShadowCubePass layered(kFaceSize, ShadowCubeDraw::layered);
     per_face.run(gpu, light, scene.world_bounds());
     layered.run(gpu, light, scene.world_bounds());
-    ASSERT_EQ(per_face.far_distance(), layered.far_distance());
+    ASSERT_EQ(per_face.near_distance(), layered.near_distance());
     const std::vector<float> a = read_cube(per_face), b = read_cube(layered);
     size_t differing = 0, covered = 0;
     for (size_t i = 0; i < a.size(); ++i) {
       differing += a[i] != b[i];
-      covered += a[i] < 1.0f;
+      covered += a[i] > 0.0f;
     }
     EXPECT_EQ(differing, 0u) << "light " << light.x << " " << light.y << " " << light.z;
     EXPECT_GT(covered, a.size() / 4) << "the floor alone covers the lower half of the cube";
@@ -132,7 +132,7 @@ TEST_F(ShadowCube, ChunksCoverEveryTriangleOnceAndCullingChangesNoDepth) {
   EXPECT_EQ(culled.face_draw_counts()[2], 1u);
 }
 
-TEST_F(ShadowCube, DepthIsTheDistanceToTheLightOverFar) {
+TEST_F(ShadowCube, DepthIsNearOverTheDistanceAlongTheFaceAxis) {
   std::vector<testing::QuadGeometry> occluders;
   const Scene scene = testing::make_floor_with_occluders(occluders);
   const render::GpuScene gpu(scene);
@@ -141,12 +141,14 @@ TEST_F(ShadowCube, DepthIsTheDistanceToTheLightOverFar) {
     ShadowCubePass pass(kFaceSize, draw);
     pass.run(gpu, light, scene.world_bounds());
     const std::vector<float> cube = read_cube(pass);
-    // -Y (face 3), centre: the lid, 2 below the light (texel centres are within half a texel of
-    // straight down: 1 / cos of that angle is 1 + 2e-4).
-    EXPECT_NEAR(texel(cube, 3, kFaceSize / 2, kFaceSize / 2) * pass.far_distance(), 2.0f, 2e-3f);
-    // +Y (face 2): nothing above the light.
+    // -Y (face 3): the lid (y = 2, 2 below the light along the face's axis; |x|, |z| <= 1, so the
+    // middle half of the face) under the middle texels, the floor (4 below) at the face's corner.
+    for (const int x : {3 * kFaceSize / 8, kFaceSize / 2, 5 * kFaceSize / 8})
+      EXPECT_NEAR(pass.near_distance() / texel(cube, 3, x, kFaceSize / 2), 2.0f, 1e-4f) << x;
+    EXPECT_NEAR(pass.near_distance() / texel(cube, 3, 0, 0), 4.0f, 1e-4f);
+    // +Y (face 2): nothing above the light (depth 0).
     for (int y = 0; y < kFaceSize; ++y)
-      for (int x = 0; x < kFaceSize; ++x) ASSERT_EQ(texel(cube, 2, x, y), 1.0f) << x << ", " << y;
+      for (int x = 0; x < kFaceSize; ++x) ASSERT_EQ(texel(cube, 2, x, y), 0.0f) << x << ", " << y;
   }
   EXPECT_EQ(render::parse_shadow_cube_draw("layered"), ShadowCubeDraw::layered);
   EXPECT_EQ(render::parse_shadow_cube_draw(render::shadow_cube_draw_name(ShadowCubeDraw::per_face)),
