@@ -2,6 +2,7 @@
 
 #include "accel/primitive_bounds.h"
 #include "accel/ray.h"
+#include "accel/sse_box.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
@@ -83,20 +84,22 @@ std::optional<BinMapping> bin_mapping(const Aabb& centroid_box, uint32_t bin_cou
 
 void SahBins::clear(uint32_t count) {
   bin_count = count;
-  constexpr float inf = std::numeric_limits<float>::infinity();
+  const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+  const __m128 minus_inf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
   for (uint32_t i = 0; i < 3 * count; ++i) {
-    box_min[i] = {inf, inf, inf, inf};
-    box_max[i] = {-inf, -inf, -inf, -inf};
-    counts[i] = 0;
+    _mm_storeu_ps(box_min[i].data(), inf);
+    _mm_storeu_ps(box_max[i].data(), minus_inf);
   }
+  std::fill_n(counts.begin(), 3 * count, 0u);
 }
 
 void SahBins::add(const SahBins& other) {
+  // Lane 3 is merged too; it is never read.
   for (uint32_t i = 0; i < 3 * bin_count; ++i) {
-    for (int axis = 0; axis < 3; ++axis) {
-      box_min[i][axis] = std::min(box_min[i][axis], other.box_min[i][axis]);
-      box_max[i][axis] = std::max(box_max[i][axis], other.box_max[i][axis]);
-    }
+    SseBox box = SseBox::load(box_min[i].data(), box_max[i].data());
+    box.extend(SseBox::load(other.box_min[i].data(), other.box_max[i].data()));
+    _mm_storeu_ps(box_min[i].data(), box.lo);
+    _mm_storeu_ps(box_max[i].data(), box.hi);
     counts[i] += other.counts[i];
   }
 }
@@ -135,25 +138,28 @@ std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& ma
   float best_cost = std::numeric_limits<float>::infinity();  // an infinite or NaN cost never wins
   for (int axis = 0; axis < 3; ++axis) {
     if (mapping.scale[axis] == 0.0f) continue;
-    Aabb right;
+    const uint32_t* const counts = &bins.counts[bins.index(axis, 0)];
+    const float* const mins = bins.box_min[bins.index(axis, 0)].data();
+    const float* const maxs = bins.box_max[bins.index(axis, 0)].data();
+    SseBox right;
     uint32_t right_count = 0;
     float cost_right = 0.0f;
     for (uint32_t b = bin_count - 1; b > 0; --b) {
-      if (bins.count(axis, b) != 0) {
-        right.extend(bins.box(axis, b));
-        right_count += bins.count(axis, b);
-        cost_right = half_area(right) * static_cast<float>(right_count);
+      if (counts[b] != 0) {
+        right.extend(SseBox::load(mins + 4 * b, maxs + 4 * b));
+        right_count += counts[b];
+        cost_right = right.half_area() * static_cast<float>(right_count);
       }
       right_cost[b] = cost_right;
     }
-    Aabb left;
+    SseBox left;
     uint32_t left_count = 0;
     for (uint32_t b = 1; b < bin_count; ++b) {
-      if (bins.count(axis, b - 1) == 0) continue;
-      left.extend(bins.box(axis, b - 1));
-      left_count += bins.count(axis, b - 1);
+      if (counts[b - 1] == 0) continue;
+      left.extend(SseBox::load(mins + 4 * (b - 1), maxs + 4 * (b - 1)));
+      left_count += counts[b - 1];
       if (left_count == count) break;  // everything is left from here on
-      const float cost = half_area(left) * static_cast<float>(left_count) + right_cost[b];
+      const float cost = left.half_area() * static_cast<float>(left_count) + right_cost[b];
       if (cost < best_cost) {
         best_cost = cost;
         best = SahSplit{axis, b, cost};
@@ -166,34 +172,48 @@ std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& ma
 std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, const PrimRange& range,
                                              const BinMapping& mapping) {
   const uint32_t count = range.size();
-  std::array<uint32_t, kSmallSahRange> bin_of;      // bin of references[i] on the current axis
+  // Boxes and the three bin indices of every reference up front, the bins as bin_serial computes
+  // them (one SSE computation per reference instead of one branchy mapping per reference and axis).
+  std::array<SseBox, kSmallSahRange> box;
+  alignas(16) std::array<std::array<int32_t, 4>, kSmallSahRange> bins;
+  const __m128 origin = _mm_setr_ps(mapping.origin.x, mapping.origin.y, mapping.origin.z, 0.0f);
+  const __m128 scale = _mm_setr_ps(mapping.scale.x, mapping.scale.y, mapping.scale.z, 0.0f);
+  const __m128 last_bin = _mm_set1_ps(static_cast<float>(mapping.bin_count - 1));
+  const PrimRef* first = refs.data() + range.begin;
+  for (uint32_t i = 0; i < count; ++i) {
+    const PrimRef& ref = first[i];
+    box[i] = SseBox::load(&ref.box_min.x, &ref.box_max.x);
+    const __m128 position =
+        _mm_mul_ps(_mm_sub_ps(_mm_setr_ps(ref.centroid.x, ref.centroid.y, ref.centroid.z, 0.0f), origin), scale);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bins[i].data()),
+                    _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, _mm_setzero_ps()), last_bin)));
+  }
   std::array<uint32_t, kSmallSahRange> order;       // reference indices sorted by bin
   std::array<float, kSmallSahRange> right_cost_at;  // cost of order[i..] when order[i] starts a bin
   std::optional<SahSplit> best;
   float best_cost = std::numeric_limits<float>::infinity();
-  const PrimRef* first = refs.data() + range.begin;
   for (int axis = 0; axis < 3; ++axis) {
     if (mapping.scale[axis] == 0.0f) continue;
+    const auto bin_of = [&](uint32_t i) { return bins[i][static_cast<size_t>(axis)]; };
     for (uint32_t i = 0; i < count; ++i) {
-      bin_of[i] = mapping.bin(first[i].centroid, axis);
       order[i] = i;
-      for (uint32_t j = i; j > 0 && bin_of[order[j - 1]] > bin_of[order[j]]; --j) std::swap(order[j - 1], order[j]);
+      for (uint32_t j = i; j > 0 && bin_of(order[j - 1]) > bin_of(order[j]); --j) std::swap(order[j - 1], order[j]);
     }
-    Aabb right;
+    SseBox right;
     for (uint32_t i = count; i-- > 0;) {
-      right.extend(first[order[i]].box());
-      if (i == 0 || bin_of[order[i - 1]] != bin_of[order[i]])
-        right_cost_at[i] = half_area(right) * static_cast<float>(count - i);
+      right.extend(box[order[i]]);
+      if (i == 0 || bin_of(order[i - 1]) != bin_of(order[i]))
+        right_cost_at[i] = right.half_area() * static_cast<float>(count - i);
     }
-    Aabb left;
+    SseBox left;
     for (uint32_t i = 0; i + 1 < count; ++i) {
-      left.extend(first[order[i]].box());
-      const uint32_t bin = bin_of[order[i]];
-      if (bin == bin_of[order[i + 1]]) continue;  // not the last reference of its bin
-      const float cost = half_area(left) * static_cast<float>(i + 1) + right_cost_at[i + 1];
+      left.extend(box[order[i]]);
+      const int32_t bin = bin_of(order[i]);
+      if (bin == bin_of(order[i + 1])) continue;  // not the last reference of its bin
+      const float cost = left.half_area() * static_cast<float>(i + 1) + right_cost_at[i + 1];
       if (cost < best_cost) {
         best_cost = cost;
-        best = SahSplit{axis, bin + 1, cost};
+        best = SahSplit{axis, static_cast<uint32_t>(bin) + 1, cost};
       }
     }
   }

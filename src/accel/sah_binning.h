@@ -6,6 +6,8 @@
 // parallel binning gives exactly the bins serial binning gives, whatever the number of threads.
 #include "accel/prim_ref.h"
 
+#include <xmmintrin.h>
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -24,10 +26,13 @@ struct BinMapping {
 
   uint32_t bin(const vec3& centroid, int axis) const {
     const float position = (centroid[axis] - origin[axis]) * scale[axis];
-    // Clamped in float before the conversion (converting an out-of-range float is undefined); the
-    // largest centroid lands exactly on bin_count and belongs to the last bin.
-    if (!(position > 0.0f)) return 0;
-    return position < static_cast<float>(bin_count - 1) ? static_cast<uint32_t>(position) : bin_count - 1;
+    // Clamped in float before the conversion (converting an out-of-range float is undefined): max
+    // with 0 sends NaN and everything not above 0 to bin 0 (_mm_max_ss(a, b) is a > b ? a : b), min
+    // sends the largest centroid, which lands exactly on bin_count, to the last bin. Branch-free:
+    // partitions call this once per reference and the branches mispredicted.
+    const __m128 clamped = _mm_min_ss(_mm_max_ss(_mm_set_ss(position), _mm_setzero_ps()),
+                                      _mm_set_ss(static_cast<float>(bin_count - 1)));
+    return static_cast<uint32_t>(_mm_cvttss_si32(clamped));
   }
 };
 
