@@ -31,21 +31,21 @@ struct Split {
 
 template <typename GoesLeft>
 Split partition_in_place(std::span<PrimRef> refs, const PrimRange& range, GoesLeft&& goes_left) {
-  PrimRange left{range.begin, range.begin, {}, {}};
-  PrimRange right{range.end, range.end, {}, {}};
+  RangeBounds left_bounds, right_bounds;
   uint32_t l = range.begin, r = range.end;
   for (;;) {
-    while (l < r && goes_left(refs[l])) left.extend(refs[l++]);
-    while (l < r && !goes_left(refs[r - 1])) right.extend(refs[--r]);
+    while (l < r && goes_left(refs[l])) left_bounds.extend(refs[l++]);
+    while (l < r && !goes_left(refs[r - 1])) right_bounds.extend(refs[--r]);
     if (l == r) break;
     // refs[l] belongs right and refs[r - 1] left, so they are two different references.
     std::swap(refs[l], refs[r - 1]);
-    left.extend(refs[l++]);
-    right.extend(refs[--r]);
+    left_bounds.extend(refs[l++]);
+    right_bounds.extend(refs[--r]);
   }
-  left.end = l;
-  right.begin = l;
-  return {left, right, false};
+  Split split{{range.begin, l, {}, {}}, {l, range.end, {}, {}}, false};
+  left_bounds.write(split.left);
+  right_bounds.write(split.right);
+  return split;
 }
 
 template <typename GoesLeft>
@@ -55,7 +55,7 @@ Split partition_parallel(std::span<const PrimRef> from, std::span<PrimRef> to, c
     uint32_t left_count = 0;
     uint32_t left_at = 0;  // output slots, filled by the prefix sum
     uint32_t right_at = 0;
-    PrimRange left, right;
+    RangeBounds left, right;
   };
   const uint32_t blocks = (range.size() + chunk - 1) / chunk;
   const auto block_limits = [&](uint32_t b) {
@@ -77,6 +77,7 @@ Split partition_parallel(std::span<const PrimRef> from, std::span<PrimRef> to, c
 
   Split split;
   split.moved = true;
+  RangeBounds left_bounds, right_bounds;
   uint32_t left_total = 0;
   for (const Block& b : block) left_total += b.left_count;
   uint32_t left_at = range.begin, right_at = range.begin + left_total;
@@ -86,9 +87,11 @@ Split partition_parallel(std::span<const PrimRef> from, std::span<PrimRef> to, c
     block[b].right_at = right_at;
     left_at += block[b].left_count;
     right_at += (end - begin) - block[b].left_count;
-    split.left.extend_bounds(block[b].left);
-    split.right.extend_bounds(block[b].right);
+    left_bounds.extend(block[b].left);
+    right_bounds.extend(block[b].right);
   }
+  left_bounds.write(split.left);
+  right_bounds.write(split.right);
   split.left.begin = range.begin;
   split.left.end = split.right.begin = range.begin + left_total;
   split.right.end = range.end;

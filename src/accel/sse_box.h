@@ -24,6 +24,15 @@ struct SseBox {
     lo = _mm_min_ps(other.lo, lo);
     hi = _mm_max_ps(other.hi, hi);
   }
+  static SseBox of(const Aabb& box) {
+    return {_mm_setr_ps(box.min.x, box.min.y, box.min.z, 0.0f), _mm_setr_ps(box.max.x, box.max.y, box.max.z, 0.0f)};
+  }
+  Aabb aabb() const {
+    alignas(16) float l[4], h[4];
+    _mm_store_ps(l, lo);
+    _mm_store_ps(h, hi);
+    return {vec3(l[0], l[1], l[2]), vec3(h[0], h[1], h[2])};
+  }
   float half_area() const {
     if (_mm_movemask_ps(_mm_cmpgt_ps(lo, hi)) & 0b111) return 0.0f;  // empty on x, y or z
     const __m128 e = _mm_sub_ps(hi, lo);
