@@ -45,6 +45,13 @@ struct PrimRange {
   }
 };
 
+// The centroid in lanes 0-2 (lane 3 unspecified). box_max.z and the centroid are the record's last
+// 16 bytes: one load that stays inside the record, then a shuffle.
+inline __m128 load_centroid(const PrimRef& ref) {
+  const __m128 tail = _mm_loadu_ps(&ref.box_max.z);
+  return _mm_shuffle_ps(tail, tail, _MM_SHUFFLE(3, 3, 2, 1));
+}
+
 // What PrimRange::extend accumulates, held in SSE registers for the loops that bound every reference
 // they move (partitions, bounding). The same minima and maxima in the same order, so write() gives
 // exactly the boxes PrimRange::extend would have given.
@@ -54,9 +61,7 @@ struct RangeBounds {
 
   void extend(const PrimRef& ref) {
     box.extend(SseBox::load(&ref.box_min.x, &ref.box_max.x));
-    // box_max.z and the centroid are the record's last 16 bytes: one load that stays inside it.
-    const __m128 tail = _mm_loadu_ps(&ref.box_max.z);
-    const __m128 centroid = _mm_shuffle_ps(tail, tail, _MM_SHUFFLE(3, 3, 2, 1));
+    const __m128 centroid = load_centroid(ref);
     centroids.extend({centroid, centroid});
   }
   static RangeBounds of(const PrimRange& range) {

@@ -19,32 +19,60 @@ namespace {
 // the bin's rows. Operation for operation what BinMapping::bin and glm::min/max compute:
 // _mm_min_ps(a, b) is (a < b ? a : b) and glm::min(x, y) is (y < x ? y : x), so glm::min(bin, ref) ==
 // _mm_min_ps(ref, bin) bit for bit (signed zeros included), and likewise for max.
-void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, const BinMapping& mapping,
-                SahBins& bins) {
-  const uint32_t bin_count = mapping.bin_count;
-  const __m128 origin = _mm_setr_ps(mapping.origin.x, mapping.origin.y, mapping.origin.z, 0.0f);
-  const __m128 scale = _mm_setr_ps(mapping.scale.x, mapping.scale.y, mapping.scale.z, 0.0f);
-  const __m128 last_bin = _mm_set1_ps(static_cast<float>(bin_count - 1));
-  const __m128 zero = _mm_setzero_ps();
-  float* const mins = bins.box_min[0].data();
-  float* const maxs = bins.box_max[0].data();
-  uint32_t* const counts = bins.counts.data();
-  alignas(16) int32_t bin[4];
-  for (uint32_t i = begin; i != end; ++i) {
-    const PrimRef& ref = refs[i];
-    const __m128 position = _mm_mul_ps(_mm_sub_ps(_mm_setr_ps(ref.centroid.x, ref.centroid.y, ref.centroid.z, 0.0f), origin), scale);
+struct Binner {
+  __m128 origin, scale, last_bin;
+  uint32_t bin_count;
+
+  explicit Binner(const BinMapping& mapping)
+      : origin(_mm_setr_ps(mapping.origin.x, mapping.origin.y, mapping.origin.z, 0.0f)),
+        scale(_mm_setr_ps(mapping.scale.x, mapping.scale.y, mapping.scale.z, 0.0f)),
+        last_bin(_mm_set1_ps(static_cast<float>(mapping.bin_count - 1))),
+        bin_count(mapping.bin_count) {}
+
+  void add(const PrimRef& ref, SahBins& bins) const {
+    const __m128 position = _mm_mul_ps(_mm_sub_ps(load_centroid(ref), origin), scale);
     // max(position, 0) maps NaN and everything not above 0 to bin 0, min() the top to the last bin,
     // and truncation does the rest, as in BinMapping::bin.
-    _mm_store_si128(reinterpret_cast<__m128i*>(bin), _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, zero), last_bin)));
+    alignas(16) int32_t bin[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(bin),
+                    _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, _mm_setzero_ps()), last_bin)));
     const __m128 lo = _mm_loadu_ps(&ref.box_min.x);  // lane 3: the index bits, never read back
     const __m128 hi = _mm_loadu_ps(&ref.box_max.x);  // lane 3: centroid.x, likewise
+    float* const mins = bins.box_min[0].data();
+    float* const maxs = bins.box_max[0].data();
     for (int axis = 0; axis < 3; ++axis) {
       const uint32_t slot = static_cast<uint32_t>(axis) * bin_count + static_cast<uint32_t>(bin[axis]);
       _mm_storeu_ps(mins + 4 * slot, _mm_min_ps(lo, _mm_loadu_ps(mins + 4 * slot)));
       _mm_storeu_ps(maxs + 4 * slot, _mm_max_ps(hi, _mm_loadu_ps(maxs + 4 * slot)));
-      ++counts[slot];
+      ++bins.counts[slot];
     }
   }
+};
+
+// Neighbouring references mostly fall in the same bins, so binning one after the other chains every
+// bin update on the previous one's store. Long ranges alternate between two sets of bins to halve
+// those chains and merge them at the end; below this length clearing and merging the second set
+// costs more than it saves.
+constexpr uint32_t kTwoBinSetsFrom = 256;
+
+// Bins refs[begin, end) into `bins` (not cleared here).
+void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, const BinMapping& mapping,
+                SahBins& bins) {
+  const Binner binner(mapping);
+  if (end - begin < kTwoBinSetsFrom) {
+    for (uint32_t i = begin; i != end; ++i) binner.add(refs[i], bins);
+    return;
+  }
+  SahBins odd;  // 27 KB of stack, of which 3 * bin_count bins are cleared and used
+  odd.clear(mapping.bin_count);
+  uint32_t i = begin;
+  for (; i + 1 < end; i += 2) {
+    binner.add(refs[i], bins);
+    binner.add(refs[i + 1], odd);
+  }
+  if (i != end) binner.add(refs[i], bins);
+  // Minima, maxima and sums: the merged bins are the bins one set would have held.
+  bins.add(odd);
 }
 
 // tbb::parallel_reduce body: a body is split off only when a thread steals work, so bins are
@@ -183,8 +211,7 @@ std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, cons
   for (uint32_t i = 0; i < count; ++i) {
     const PrimRef& ref = first[i];
     box[i] = SseBox::load(&ref.box_min.x, &ref.box_max.x);
-    const __m128 position =
-        _mm_mul_ps(_mm_sub_ps(_mm_setr_ps(ref.centroid.x, ref.centroid.y, ref.centroid.z, 0.0f), origin), scale);
+    const __m128 position = _mm_mul_ps(_mm_sub_ps(load_centroid(ref), origin), scale);
     _mm_store_si128(reinterpret_cast<__m128i*>(bins[i].data()),
                     _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, _mm_setzero_ps()), last_bin)));
   }
