@@ -77,22 +77,45 @@ void bin_serial(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, con
 
 // tbb::parallel_reduce body: a body is split off only when a thread steals work, so bins are
 // cleared and merged once per stolen range, not once per chunk. The first body bins straight into
-// the caller's bins (no 21 KB copy at the end); split-off bodies bin into their own.
+// the caller's bins (no 21 KB copy at the end); split-off bodies bin into their own. With
+// block_counts, the range is one block index range (block b is refs[first + b * chunk, ...)), and
+// each block's bin counts are recorded as the difference of the body's counts around it.
 struct BinReduction {
   std::span<const PrimRef> refs;
   const BinMapping& mapping;
   SahBins own;
   SahBins* bins;
+  BlockBinCounts* block_counts = nullptr;
+  uint32_t first = 0, end = 0, chunk = 0;
 
   BinReduction(std::span<const PrimRef> r, const BinMapping& m, SahBins& out) : refs(r), mapping(m), bins(&out) {
     bins->clear(m.bin_count);
   }
-  BinReduction(BinReduction& other, tbb::split) : refs(other.refs), mapping(other.mapping), bins(&own) {
+  BinReduction(BinReduction& other, tbb::split)
+      : refs(other.refs),
+        mapping(other.mapping),
+        bins(&own),
+        block_counts(other.block_counts),
+        first(other.first),
+        end(other.end),
+        chunk(other.chunk) {
     own.clear(mapping.bin_count);
   }
   BinReduction(const BinReduction&) = delete;
   BinReduction& operator=(const BinReduction&) = delete;
-  void operator()(const tbb::blocked_range<uint32_t>& r) { bin_serial(refs, r.begin(), r.end(), mapping, *bins); }
+  void operator()(const tbb::blocked_range<uint32_t>& r) {
+    if (block_counts == nullptr) {
+      bin_serial(refs, r.begin(), r.end(), mapping, *bins);
+      return;
+    }
+    const uint32_t slots = 3 * mapping.bin_count;
+    for (uint32_t b = r.begin(); b != r.end(); ++b) {
+      uint32_t* const counts = block_counts->block(b);
+      std::copy_n(bins->counts.begin(), slots, counts);
+      bin_serial(refs, first + b * chunk, std::min(end, first + (b + 1) * chunk), mapping, *bins);
+      for (uint32_t k = 0; k < slots; ++k) counts[k] = bins->counts[k] - counts[k];
+    }
+  }
   void join(const BinReduction& other) { bins->add(*other.bins); }
 };
 
@@ -151,6 +174,27 @@ void bin_refs(std::span<const PrimRef> refs, const PrimRange& range, const BinMa
   }
   BinReduction reduction(refs, mapping, bins);
   tbb::parallel_reduce(tbb::blocked_range<uint32_t>(range.begin, range.end, chunk), reduction);
+}
+
+void bin_refs_by_block(std::span<const PrimRef> refs, const PrimRange& range, const BinMapping& mapping,
+                       uint32_t chunk, SahBins& bins, BlockBinCounts& block_counts) {
+  const uint32_t blocks = (range.size() + chunk - 1) / chunk;
+  block_counts.reset(blocks, 3 * mapping.bin_count);
+  BinReduction reduction(refs, mapping, bins);
+  reduction.block_counts = &block_counts;
+  reduction.first = range.begin;
+  reduction.end = range.end;
+  reduction.chunk = chunk;
+  tbb::parallel_reduce(tbb::blocked_range<uint32_t>(0, blocks, 1), reduction);
+}
+
+void BlockBinCounts::left_counts(int axis, uint32_t boundary, uint32_t bin_count, std::span<uint32_t> out) const {
+  for (uint32_t b = 0; b < blocks_; ++b) {
+    const uint32_t* const counts = block(b) + static_cast<uint32_t>(axis) * bin_count;
+    uint32_t sum = 0;
+    for (uint32_t k = 0; k < boundary; ++k) sum += counts[k];
+    out[b] = sum;
+  }
 }
 
 std::optional<SahSplit> best_sah_split(const SahBins& bins, const BinMapping& mapping, uint32_t count) {
