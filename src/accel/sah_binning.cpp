@@ -259,6 +259,20 @@ std::optional<SahSplit> best_sah_split_small(std::span<const PrimRef> refs, cons
     _mm_store_si128(reinterpret_cast<__m128i*>(bins[i].data()),
                     _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(position, _mm_setzero_ps()), last_bin)));
   }
+  if (count == 2) {
+    // The only split puts one reference on each side, at the same cost on every axis that separates
+    // them (area(a) + area(b) == area(b) + area(a) in floats), so the general search below would
+    // keep the first such axis: no sorting or sweeping needed.
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto a = static_cast<size_t>(axis);
+      if (mapping.scale[axis] == 0.0f || bins[0][a] == bins[1][a]) continue;
+      const size_t low = bins[0][a] < bins[1][a] ? 0 : 1;
+      const float cost = box[low].half_area() * 1.0f + box[1 - low].half_area() * 1.0f;
+      if (!(cost < std::numeric_limits<float>::infinity())) return std::nullopt;  // as no boundary winning
+      return SahSplit{axis, static_cast<uint32_t>(bins[low][a]) + 1, cost};
+    }
+    return std::nullopt;
+  }
   std::array<uint32_t, kSmallSahRange> order;       // reference indices sorted by bin
   std::array<float, kSmallSahRange> right_cost_at;  // cost of order[i..] when order[i] starts a bin
   std::optional<SahSplit> best;
