@@ -44,7 +44,7 @@ std::optional<detail::Split> sah_policy(const detail::SplitContext& context, con
   std::vector<uint32_t> left_counts;
   if (by_block) {
     left_counts.resize(block_counts.blocks());
-    block_counts.left_counts(best->axis, best->boundary, options.bins, left_counts);
+    block_counts.left_counts(best->axis, best->boundary, mapping->bin_count, left_counts);
   }
   return detail::partition_range(
       context, range,
