@@ -15,7 +15,9 @@ PrimRange join_bounds(PrimRange a, const PrimRange& b) {
 
 PrimRange bound_refs(std::span<const PrimRef> refs, uint32_t begin, uint32_t end, bool parallel, uint32_t chunk) {
   const auto accumulate = [&](uint32_t from, uint32_t to, PrimRange acc) {
-    for (uint32_t i = from; i != to; ++i) acc.extend(refs[i]);
+    RangeBounds bounds = RangeBounds::of(acc);
+    for (uint32_t i = from; i != to; ++i) bounds.extend(refs[i]);
+    bounds.write(acc);
     return acc;
   };
   const PrimRange empty{begin, end, {}, {}};
@@ -31,11 +33,13 @@ PrimRange make_prim_refs(const BuildInput& input, std::span<PrimRef> refs, uint3
   return tbb::parallel_reduce(
       tbb::blocked_range<uint32_t>(0, count, chunk), PrimRange{0, count, {}, {}},
       [&](const tbb::blocked_range<uint32_t>& r, PrimRange acc) {
+        RangeBounds bounds = RangeBounds::of(acc);
         for (uint32_t i = r.begin(); i != r.end(); ++i) {
           const Aabb& box = input.boxes[i];
           refs[i] = PrimRef{box.min, i, box.max, input.centroids[i]};
-          acc.extend(refs[i]);
+          bounds.extend(refs[i]);
         }
+        bounds.write(acc);
         return acc;
       },
       join_bounds);

@@ -3,8 +3,10 @@
 // Splitting moves these 40-byte records rather than an index array into boxes and centroids, so every
 // pass over a range (binning, partitioning, bounding) reads memory in order instead of gathering.
 #include "accel/build_options.h"
+#include "accel/sse_box.h"
 #include "core/math.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <type_traits>
@@ -42,6 +44,42 @@ struct PrimRange {
     centroid_box.extend(other.centroid_box);
   }
 };
+
+// The centroid in lanes 0-2 (lane 3 unspecified). box_max.z and the centroid are the record's last
+// 16 bytes: one load that stays inside the record, then a shuffle.
+inline __m128 load_centroid(const PrimRef& ref) {
+  const __m128 tail = _mm_loadu_ps(&ref.box_max.z);
+  return _mm_shuffle_ps(tail, tail, _MM_SHUFFLE(3, 3, 2, 1));
+}
+
+// What PrimRange::extend accumulates, held in SSE registers for the loops that bound every reference
+// they move (partitions, bounding). The same minima and maxima in the same order, so write() gives
+// exactly the boxes PrimRange::extend would have given.
+struct RangeBounds {
+  SseBox box;
+  SseBox centroids;
+
+  void extend(const PrimRef& ref) {
+    box.extend(SseBox::load(&ref.box_min.x, &ref.box_max.x));
+    const __m128 centroid = load_centroid(ref);
+    centroids.extend({centroid, centroid});
+  }
+  static RangeBounds of(const PrimRange& range) {
+    return {SseBox::of(range.box), SseBox::of(range.centroid_box)};
+  }
+  void extend(const RangeBounds& other) {
+    box.extend(other.box);
+    centroids.extend(other.centroids);
+  }
+  // range's box and centroid_box become these bounds (begin and end are left as they are).
+  void write(PrimRange& range) const {
+    range.box = box.aabb();
+    range.centroid_box = centroids.aabb();
+  }
+};
+
+static_assert(offsetof(PrimRef, centroid) + sizeof(vec3) == sizeof(PrimRef) &&
+              offsetof(PrimRef, box_max) + 2 * sizeof(float) + 16 == sizeof(PrimRef));
 
 // Bounds of refs[begin, end) (a PrimRange with those limits), with a TBB reduction over chunks of
 // `chunk` references when `parallel`. Min and max are exact, so both ways give the same boxes.

@@ -6,10 +6,13 @@
 // parallel binning gives exactly the bins serial binning gives, whatever the number of threads.
 #include "accel/prim_ref.h"
 
+#include <xmmintrin.h>
+
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace glint::accel::detail {
 
@@ -24,10 +27,13 @@ struct BinMapping {
 
   uint32_t bin(const vec3& centroid, int axis) const {
     const float position = (centroid[axis] - origin[axis]) * scale[axis];
-    // Clamped in float before the conversion (converting an out-of-range float is undefined); the
-    // largest centroid lands exactly on bin_count and belongs to the last bin.
-    if (!(position > 0.0f)) return 0;
-    return position < static_cast<float>(bin_count - 1) ? static_cast<uint32_t>(position) : bin_count - 1;
+    // Clamped in float before the conversion (converting an out-of-range float is undefined): max
+    // with 0 sends NaN and everything not above 0 to bin 0 (_mm_max_ss(a, b) is a > b ? a : b), min
+    // sends the largest centroid, which lands exactly on bin_count, to the last bin. Branch-free:
+    // partitions call this once per reference and the branches mispredicted.
+    const __m128 clamped = _mm_min_ss(_mm_max_ss(_mm_set_ss(position), _mm_setzero_ps()),
+                                      _mm_set_ss(static_cast<float>(bin_count - 1)));
+    return static_cast<uint32_t>(_mm_cvttss_si32(clamped));
   }
 };
 
@@ -62,6 +68,33 @@ struct SahBins {
 // `parallel`, chunks of `chunk` references are binned by TBB tasks and merged.
 void bin_refs(std::span<const PrimRef> refs, const PrimRange& range, const BinMapping& mapping, bool parallel,
               uint32_t chunk, SahBins& bins);
+
+// How many references of each block of a range fell in each bin: block b is references
+// [range.begin + b * chunk, ...) and its counts are 3 * bin_count numbers laid out like SahBins's.
+// Binning records them so that a parallel partition of the same blocks by a bin boundary knows
+// every block's left count without a counting pass over the references.
+class BlockBinCounts {
+ public:
+  void reset(uint32_t blocks, uint32_t slots) {
+    blocks_ = blocks;
+    slots_ = slots;
+    counts_.resize(size_t{blocks} * slots);
+  }
+  uint32_t blocks() const { return blocks_; }
+  uint32_t* block(uint32_t b) { return counts_.data() + size_t{b} * slots_; }
+  const uint32_t* block(uint32_t b) const { return counts_.data() + size_t{b} * slots_; }
+  // out[b] = references of block b in bins [0, boundary) of `axis` (out.size() >= blocks()).
+  void left_counts(int axis, uint32_t boundary, uint32_t bin_count, std::span<uint32_t> out) const;
+
+ private:
+  uint32_t blocks_ = 0;
+  uint32_t slots_ = 0;
+  std::vector<uint32_t> counts_;
+};
+
+// bin_refs in parallel over the blocks of `chunk` references, also recording every block's counts.
+void bin_refs_by_block(std::span<const PrimRef> refs, const PrimRange& range, const BinMapping& mapping,
+                       uint32_t chunk, SahBins& bins, BlockBinCounts& block_counts);
 
 // The cheapest boundary: bins [0, boundary) of `axis` go left. cost = A_left N_left + A_right N_right
 // with A the half surface area (not yet divided by the node's area).

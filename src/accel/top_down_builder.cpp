@@ -26,8 +26,9 @@ uint32_t median_levels(uint32_t count, uint32_t max_leaf_size) {
   return levels;
 }
 
-// A node as the recursion leaves it. Tasks take sibling pairs from a shared counter, so indices
-// depend on scheduling until renumber() lays the tree out depth-first.
+// A node as the recursion leaves it. Tasks take sibling pairs (or, for a subtree built by one thread,
+// a block of slots) from a shared counter, so indices depend on scheduling until renumber() lays the
+// tree out depth-first.
 struct BuildNode {
   vec3 bounds_min;
   uint32_t first;  // left child (interior) or first prim_indices slot (leaf)
@@ -46,7 +47,10 @@ struct Builder {
   BuildNode* nodes;
   std::array<std::span<PrimRef>, 2> refs;  // a range's references are in one, the other is scratch
   std::span<uint32_t> prim_indices;
-  std::atomic<uint32_t> next_node{1};
+  // Node slots are handed out from here to nodes split in parallel and, in bulk, to subtrees one
+  // thread builds alone. On its own cache line: the fields above are read at every node by every
+  // thread, and an atomic updated next to them made each update invalidate them on all the others.
+  alignas(64) std::atomic<uint32_t> next_node{1};
 
   SplitContext context(int buffer, bool parallel) const {
     return {options, refs[static_cast<size_t>(buffer)], refs[static_cast<size_t>(1 - buffer)], parallel, chunk};
@@ -61,8 +65,8 @@ struct Builder {
   }
 
   // Builds the subtree over `range`, whose references are in refs[buffer], at nodes[index]; returns
-  // its height.
-  uint32_t build(uint32_t index, const PrimRange& range, int buffer, uint32_t level) {
+  // its height. serial_next: inside a subtree that this thread builds alone, its next free slot.
+  uint32_t build(uint32_t index, const PrimRange& range, int buffer, uint32_t level, uint32_t* serial_next) {
     BuildNode& node = nodes[index];
     node.bounds_min = range.box.min;
     node.bounds_max = range.box.max;
@@ -81,18 +85,33 @@ struct Builder {
     if (!split || !fits_depth(split->left) || !fits_depth(split->right))
       split = object_median_split(context(buffer, parallel), range);
 
-    const uint32_t left = next_node.fetch_add(2, std::memory_order_relaxed);
+    // A subtree that one thread builds takes its slots from one reservation: one atomic per subtree
+    // instead of one per node, and its nodes are contiguous, so threads do not write to the same
+    // cache lines. Below its root a binary tree over `count` primitives has at most 2 count - 2
+    // nodes; the reservations and the nodes split in parallel (a binary tree whose leaves are the
+    // reserving subtrees) then never take more than the 2 n - 1 slots there are.
+    uint32_t left = 0, reserved_next = 0;
+    if (parallel) {
+      left = next_node.fetch_add(2, std::memory_order_relaxed);
+    } else if (serial_next == nullptr) {
+      left = next_node.fetch_add(2 * count - 2, std::memory_order_relaxed);
+      reserved_next = left + 2;
+      serial_next = &reserved_next;
+    } else {
+      left = *serial_next;
+      *serial_next += 2;
+    }
     node.first = left;
     node.prim_count = 0;
     uint32_t left_height = 0, right_height = 0;
     if (parallel) {
       tbb::task_group group;
-      group.run([&] { left_height = build(left, split->left, buffer, level + 1); });
-      right_height = build(left + 1, split->right, buffer, level + 1);
+      group.run([&] { left_height = build(left, split->left, buffer, level + 1, nullptr); });
+      right_height = build(left + 1, split->right, buffer, level + 1, nullptr);
       group.wait();
     } else {
-      left_height = build(left, split->left, buffer, level + 1);
-      right_height = build(left + 1, split->right, buffer, level + 1);
+      left_height = build(left, split->left, buffer, level + 1, serial_next);
+      right_height = build(left + 1, split->right, buffer, level + 1, serial_next);
     }
     node.descendants = 2 + nodes[left].descendants + nodes[left + 1].descendants;
     return 1 + std::max(left_height, right_height);
@@ -172,8 +191,10 @@ Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const s
     Builder builder{options, policy, chunk, nodes.data(), {std::span<PrimRef>(refs), std::span<PrimRef>(scratch)},
                     bvh.prim_indices};
     const PrimRange root = make_prim_refs(input, builder.refs[0], chunk);
-    bvh.depth = builder.build(0, root, 0, 1);
-    bvh.nodes.resize(builder.next_node.load());
+    bvh.depth = builder.build(0, root, 0, 1, nullptr);
+    // Reserved slots that subtrees did not use leave gaps in `nodes`; the renumbering follows child
+    // links, so only the count of real nodes matters here.
+    bvh.nodes.resize(1 + nodes[0].descendants);
     const Renumberer renumberer{nodes.data(), bvh.nodes.data(), std::max(options.parallel_threshold, 2u)};
     renumberer.emit(0, 0, 1);
   }

@@ -36,12 +36,20 @@ struct SplitContext {
 // chunk's bookkeeping stays negligible and a small threshold (tests) still gives many chunks.
 uint32_t parallel_chunk(const BuildOptions& options);
 
+// Whether partition_range splits this range in parallel, in blocks of context.chunk references.
+inline bool partitions_in_parallel(const SplitContext& context, const PrimRange& range) {
+  return context.parallel && range.size() >= 2 * context.chunk;
+}
+
 // Splits the range by goes_left(ref) (references with it true first), in parallel into
 // context.other for large ranges, in place otherwise; both children's bounds come with it.
+// left_counts: for a parallel partition, the number of references of each block that go left, when
+// known (see partition_parallel); ignored otherwise.
 template <typename GoesLeft>
-Split partition_range(const SplitContext& context, const PrimRange& range, GoesLeft&& goes_left) {
-  if (context.parallel && range.size() >= 2 * context.chunk)
-    return partition_parallel(context.refs, context.other, range, context.chunk, goes_left);
+Split partition_range(const SplitContext& context, const PrimRange& range, GoesLeft&& goes_left,
+                      std::span<const uint32_t> left_counts = {}) {
+  if (partitions_in_parallel(context, range))
+    return partition_parallel(context.refs, context.other, range, context.chunk, goes_left, left_counts);
   return partition_in_place(context.refs, range, goes_left);
 }
 
