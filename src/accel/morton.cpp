@@ -66,17 +66,19 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
   return order;
 }
 
-// Sorted neighbours with the same 30-bit code but different centroids (see
-// kMaxMorton30CollisionFraction).
-size_t count_coarse_collisions(const MortonOrder& order, std::span<const vec3> centroids) {
+// Sorted neighbours whose 30-bit codes are equal but whose 63-bit codes differ: the pairs 63 bits
+// would put in order and 30 bits leave in index order (see kMaxMorton30CollisionFraction). Pairs
+// with equal 63-bit codes (identical centroids among them) gain nothing from 63 bits and do not
+// count. Codes alone, so no centroid is gathered.
+size_t count_coarse_collisions(const MortonOrder& order) {
   if (order.codes.size() < 2) return 0;
   return tbb::parallel_reduce(
       tbb::blocked_range<size_t>(1, order.codes.size(), 8192), size_t{0},
       [&](const tbb::blocked_range<size_t>& r, size_t acc) {
-        for (size_t i = r.begin(); i != r.end(); ++i)
-          if (order.codes[i] >> kCoarseShift == order.codes[i - 1] >> kCoarseShift &&
-              centroids[order.prims[i]] != centroids[order.prims[i - 1]])
-            ++acc;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          const uint64_t a = order.codes[i - 1], b = order.codes[i];
+          acc += a >> kCoarseShift == b >> kCoarseShift && a != b;
+        }
         return acc;
       },
       std::plus<>());
@@ -127,7 +129,7 @@ MortonOrder sort_by_morton(std::span<const vec3> centroids) {
   // rest. A separate 30-bit sort followed by a full 63-bit one cost twice the codes and 12 passes.
   MortonOrder order = fine_codes(centroids, unit_mapping(centroids));
   radix_sort_pairs_by_bits(order.codes, order.prims, kCoarseShift, 64);
-  const size_t collisions = count_coarse_collisions(order, centroids);
+  const size_t collisions = count_coarse_collisions(order);
   if (static_cast<double>(collisions) <= kMaxMorton30CollisionFraction * static_cast<double>(centroids.size())) {
     order.bits = 30;
     tbb::parallel_for(tbb::blocked_range<size_t>(0, order.codes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {

@@ -24,10 +24,10 @@ struct MortonOrder {
   uint32_t bits = 0;  // 30 or 63
 };
 
-// When 30-bit codes are enough: at most this fraction of sorted neighbours may share a code while
-// their centroids differ. Beyond it (fine detail in a large scene: 1024 cells per axis are too coarse)
-// the order inside those cells would be arbitrary, so the codes are recomputed with 63 bits. Pairs
-// whose centroids are identical do not count: no code length can separate them.
+// When 30-bit codes are enough: at most this fraction of sorted neighbours may share a 30-bit code
+// while their 63-bit codes differ. Beyond it (fine detail in a large scene: 1024 cells per axis are
+// too coarse) the order inside those cells would be arbitrary, so 63 bits are used. Pairs that 63
+// bits cannot separate either (identical centroids, among others) do not count.
 inline constexpr double kMaxMorton30CollisionFraction = 0.01;
 
 // Computes, checks and sorts the codes of `centroids` (in their bounding box; a flat axis maps to 0),
