@@ -14,6 +14,7 @@
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "core/error.h"
+#include "prim_ref_test_support.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -31,12 +32,7 @@ namespace {
 
 using detail::PrimRange;
 using detail::PrimRef;
-
-std::vector<PrimRef> make_refs(const PrimitiveBounds& bounds, PrimRange& root) {
-  std::vector<PrimRef> refs(bounds.boxes.size());
-  root = detail::make_prim_refs(bounds.input(), refs, 1024);
-  return refs;
-}
+using testing::make_refs;
 
 // Bins computed straight from the input, one primitive at a time: box and count per (axis, bin).
 struct ExpectedBins {

@@ -7,6 +7,7 @@
 #include "accel/primitive_bounds.h"
 #include "accel/sah_binning.h"
 #include "accel/sse_box.h"
+#include "prim_ref_test_support.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@ namespace {
 
 using detail::PrimRange;
 using detail::PrimRef;
+using testing::make_refs;
 
 bool same_bits(const vec3& a, const vec3& b) { return std::memcmp(&a, &b, sizeof(vec3)) == 0; }
 
@@ -65,12 +67,6 @@ TEST(SahBinMapping, BranchFreeBinEqualsTheClampedFormula) {
       const vec3 c(v, v, v);
       EXPECT_EQ(mapping.bin(c, axis), expected(c, axis)) << v << " axis " << axis;
     }
-}
-
-std::vector<PrimRef> make_refs(const PrimitiveBounds& bounds, PrimRange& root) {
-  std::vector<PrimRef> refs(bounds.boxes.size());
-  root = detail::make_prim_refs(bounds.input(), refs, 1024);
-  return refs;
 }
 
 TEST(SahBlockBinning, BinsEqualPlainBinningAndBlockCountsEqualBruteForce) {
