@@ -117,7 +117,7 @@ void check_updates(Scene scene, accel::BvhBuilder builder, UpdatePolicy policy) 
     if (builder == accel::BvhBuilder::sah || builder == accel::BvhBuilder::trbvh) {
       // Built on the CPU and uploaded, refitted on the GPU from the same vertices: the same boxes as
       // the cpu backend's refit, so the same drift up to the GPU's float summation of the SAH.
-      EXPECT_NEAR(drift, cpu_refit_drift(rest_scene, builder, {17, 40, 41}), 1e-4 * drift)
+      EXPECT_NEAR(drift, cpu_refit_drift(rest_scene, builder, {17, 40, 41}), 1e-3 * drift)
           << accel::builder_name(builder);
     } else {
       // Built on the GPU (another tree than the CPU's): a refit keeps the topology, so the cost
