@@ -134,6 +134,11 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
                     "(mean ms per frame, SAH drift at the end); 0 skips this part")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000000));
+  bench->add_option("--build-runs", options.build_runs,
+                    "Builds of each structure; the table shows the median build time, the JSON the first (cold) "
+                    "one too")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   bench->add_option("--seed", options.seed, "Seed of the random rays")->capture_default_str();
 }
 
@@ -148,6 +153,7 @@ int run_accel_bench_command(const AccelBenchOptions& options) {
   bench.width = options.width;
   bench.height = options.height;
   bench.deform_frames = options.deform_frames;
+  bench.build_runs = options.build_runs;
   bench.seed = options.seed;
   bench.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 

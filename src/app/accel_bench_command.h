@@ -20,6 +20,7 @@ struct AccelBenchOptions {
   int threads = 0;                    // 0: all hardware threads
   std::string json;                   // empty: no JSON
   int deform_frames = 100;
+  int build_runs = 3;
   unsigned seed = 1;
 };
 

@@ -61,6 +61,11 @@ TEST(AccelBenchRun, EveryStructureIsBuiltCheckedTimedAndDeformed) {
     EXPECT_GT(r.memory_bytes, 0u) << r.name;
     const bool embree = r.name.rfind("embree-", 0) == 0;
     EXPECT_EQ(r.nodes.has_value(), !embree) << r.name;
+    // build_ms is the median of build_runs builds (3 by default), the first one kept beside it.
+    EXPECT_GT(r.first_build_ms, 0.0) << r.name;
+    EXPECT_GT(r.build_ms, 0.0) << r.name;
+    EXPECT_NEAR(r.mprims_per_s, static_cast<double>(report.scene_triangles) / (r.build_ms * 1e3), 1e-9 * r.mprims_per_s)
+        << r.name;
     EXPECT_EQ(r.sah.has_value(), is_binary_bvh(r.name)) << r.name;
   }
   const auto medium = std::find_if(report.structures.begin(), report.structures.end(),
@@ -227,6 +232,20 @@ TEST(AccelBenchRun, CudaStructuresAgreeWithTheCpuReference) {
   EXPECT_TRUE(kdtree->nodes.has_value());
 }
 
+TEST(AccelBenchRun, OneBuildRunReportsThatBuildAndNoneIsAnError) {
+  Scene scene = glint::testing::make_tiny_scene(4);
+  BenchOptions options = small_options();
+  options.structures = {"sah", "lbvh"};
+  options.deform_frames = 0;
+  options.build_runs = 1;
+  const BenchReport report = run_accel_bench(scene, options);
+  EXPECT_EQ(report.build_runs, 1);
+  for (const StructureResult& r : report.structures) EXPECT_EQ(r.build_ms, r.first_build_ms) << r.name;
+  options.build_runs = 0;
+  EXPECT_NE(glint::testing::error_of([&] { (void)run_accel_bench(scene, options); }).find("build runs must be at least 1"),
+            std::string::npos);
+}
+
 TEST(AccelBenchRun, JsonHasTheMachineAndOneRowPerStructure) {
   Scene scene = glint::testing::make_tiny_scene(4);
   BenchOptions options = small_options();
@@ -243,6 +262,11 @@ TEST(AccelBenchRun, JsonHasTheMachineAndOneRowPerStructure) {
   ASSERT_EQ(j["structures"].size(), options.structures.size());
   for (size_t i = 0; i < options.structures.size(); ++i) EXPECT_EQ(j["structures"][i]["name"], options.structures[i]);
   EXPECT_EQ(j["deformation"]["structures"].size(), options.structures.size());
+  EXPECT_EQ(j["build_runs"], options.build_runs);
+  for (size_t i = 0; i < options.structures.size(); ++i) {
+    EXPECT_EQ(j["structures"][i]["build_ms"].get<double>(), report.structures[i].build_ms);
+    EXPECT_EQ(j["structures"][i]["first_build_ms"].get<double>(), report.structures[i].first_build_ms);
+  }
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(folder.path()), {}), 1);  // no temp file left
   EXPECT_THROW(write_json_atomically(folder.path() / "missing" / "x.json", j), Error);
 }

@@ -79,7 +79,12 @@ void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& 
     Candidate candidate = find_entry(menu, name).make();
     StructureResult result;
     result.name = name;
-    result.build_ms = candidate.build(mesh);
+    std::vector<double> builds;
+    for (int run = 0; run < options.build_runs; ++run) builds.push_back(candidate.build(mesh));  // keeps the last
+    result.first_build_ms = builds.front();
+    std::sort(builds.begin(), builds.end());
+    result.build_ms = builds.size() % 2 == 1 ? builds[builds.size() / 2]
+                                             : 0.5 * (builds[builds.size() / 2 - 1] + builds[builds.size() / 2]);
     result.mprims_per_s = result.build_ms > 0.0 ? mesh.triangle_count / (result.build_ms * 1e3) : 0.0;
     const CandidateStats stats = candidate.stats();
     result.nodes = stats.nodes;
@@ -203,6 +208,7 @@ RayKind parse_ray_kind(std::string_view name) {
 BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
   if (options.structures.empty()) fail("accel-bench: no structures to compare");
   if (options.timed_runs < 1) fail("accel-bench: timed runs must be at least 1, not {}", options.timed_runs);
+  if (options.build_runs < 1) fail("accel-bench: build runs must be at least 1, not {}", options.build_runs);
   if (options.width < 1 || options.height < 1)
     fail("accel-bench: image size {}x{} must be at least 1x1", options.width, options.height);
   if (options.deform_frames < 0) fail("accel-bench: deform frames must be >= 0, not {}", options.deform_frames);
@@ -218,6 +224,7 @@ BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
   report.ray_kind = options.rays;
   report.frames = options.frames;
   report.width = options.width;
+  report.build_runs = options.build_runs;
   report.height = options.height;
 
   {

@@ -30,6 +30,9 @@ struct BenchOptions {
   int deform_frames = 100;  // 0 skips the deformation benchmark
   uint32_t seed = 1;        // random rays
   int timed_runs = 3;       // best of these, after one warm-up run (whose hits are checked)
+  // Builds of each structure: build_ms is their median, first_build_ms the first one's (cold: it
+  // faults in fresh memory that later builds partly get back from the allocator).
+  int build_runs = 3;
   // Brute-force structures are not traced when rays x triangles exceeds this (hours of work).
   double brute_force_limit = 2e9;
   // Test hook: called with each structure's name and hits after its warm-up trace, before the check,
@@ -41,8 +44,9 @@ struct BenchOptions {
 
 struct StructureResult {
   std::string name;
-  double build_ms = 0.0;
-  double mprims_per_s = 0.0;            // triangles / build time
+  double build_ms = 0.0;                // median of build_runs builds
+  double first_build_ms = 0.0;          // the first of them
+  double mprims_per_s = 0.0;            // triangles / build_ms
   std::optional<size_t> nodes;
   size_t memory_bytes = 0;
   std::optional<double> sah;
@@ -70,6 +74,7 @@ struct BenchReport {
   size_t ray_count = 0;
   size_t ray_hits = 0;                  // of the reference structure
   std::string reference;                // the structure every other one was checked against
+  int build_runs = 0;
   std::vector<StructureResult> structures;
   // Deformation: the deformable meshes' instances alone, `deform_frames` frames of sine waves.
   std::vector<std::string> deformable_meshes;

@@ -44,10 +44,12 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
   j["rays"] = {{"kind", ray_kind_name(report.ray_kind)}, {"frames", report.frames}, {"width", report.width},
                {"height", report.height}, {"count", report.ray_count}, {"hits", report.ray_hits},
                {"reference", report.reference}};
+  j["build_runs"] = report.build_runs;
   j["structures"] = nlohmann::json::array();
   for (const StructureResult& r : report.structures) {
     nlohmann::json row = {{"name", r.name},
                           {"build_ms", r.build_ms},
+                          {"first_build_ms", r.first_build_ms},
                           {"mprims_per_s", r.mprims_per_s},
                           {"nodes", or_null(r.nodes)},
                           {"memory_bytes", r.memory_bytes},
