@@ -37,6 +37,8 @@ struct CommonPrefix {
 // is exactly Karras's tree, with no binary searches and with each node visited once, after both of
 // its children: boxes and anything else computed bottom-up come in the same sweep.
 //
+inline constexpr uint32_t kBoxPrefetchDistance = 16;
+
 // Fills `tree`; visit_leaf(leaf) and visit_interior(node) run once per node, children before
 // parents, with the node's children, prim and box already written.
 template <typename VisitLeaf, typename VisitInterior>
@@ -54,6 +56,9 @@ void build_radix_tree(BinaryTree& tree, const BuildInput& input, const MortonOrd
   const uint32_t last_key = count - 1;
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 512), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t leaf = r.begin(); leaf != r.end(); ++leaf) {
+      // The boxes are read in Morton order, so at random: fetching a few leaves ahead hides the
+      // cache misses that were a third of this sweep.
+      if (leaf + kBoxPrefetchDistance < count) __builtin_prefetch(&input.boxes[order.prims[leaf + kBoxPrefetchDistance]]);
       TreeNode& leaf_node = tree.nodes[leaf];
       leaf_node.prim = order.prims[leaf];
       leaf_node.box = input.boxes[leaf_node.prim];
@@ -66,11 +71,17 @@ void build_radix_tree(BinaryTree& tree, const BuildInput& input, const MortonOrd
         const uint32_t parent = count + split;
         tree.nodes[node].parent = parent;
         (is_left_child ? tree.nodes[parent].left : tree.nodes[parent].right) = node;
-        // acq_rel: the second arrival sees everything the first one wrote below the parent.
+        // The second arrival must see everything the first one wrote below the parent (acquire,
+        // against the first one's release). A sibling already there is seen by a plain acquire
+        // load, with no locked instruction: a right child usually finds its left sibling done, as
+        // leaves are taken left to right. Otherwise the exchange decides who goes on.
         const uint32_t far_end = is_left_child ? first : last;
-        const uint32_t sibling_far_end =
-            std::atomic_ref<uint32_t>(waiting[split]).exchange(far_end + 1, std::memory_order_acq_rel);
-        if (sibling_far_end == 0) break;
+        std::atomic_ref<uint32_t> slot(waiting[split]);
+        uint32_t sibling_far_end = slot.load(std::memory_order_acquire);
+        if (sibling_far_end == 0) {
+          sibling_far_end = slot.exchange(far_end + 1, std::memory_order_acq_rel);
+          if (sibling_far_end == 0) break;
+        }
         (is_left_child ? last : first) = sibling_far_end - 1;
         node = parent;
         TreeNode& interior = tree.nodes[node];
