@@ -1,5 +1,5 @@
 // CPU build time on the built-in `atrium` scene (618k triangles, every instance flattened to
-// world-space triangles), and where it goes:
+// world-space triangles as accel-bench does), and where it goes:
 //   LbvhPhases    the lbvh build step by step (triangle boxes, Morton codes and sort, the radix
 //                 tree with its boxes and collapse costs, flattening); one counter per step, ms per
 //                 build; `morton_bits` says whether 30-bit codes sufficed
@@ -18,6 +18,7 @@
 #include "accel/embree_scene.h"
 #include "accel/morton.h"
 #include "accel/primitive_bounds.h"
+#include "rt/scene_geometry.h"
 #include "scene/presets.h"
 
 #include <benchmark/benchmark.h>
@@ -33,8 +34,11 @@
 namespace glint::accel {
 namespace {
 
+// The scene's world triangles, indexed (one vertex block per instance), exactly as `glint
+// accel-bench` flattens them: Embree's builds depend on the vertex count, so a soup of three
+// vertices per triangle would slow them down (by about a third on 2 threads) and flatter glint.
 struct BuildFixture {
-  std::vector<vec3> soup;
+  rt::SceneGeometry geometry;
   TriangleMesh mesh;
   std::unique_ptr<tbb::global_control> threads;
 
@@ -42,12 +46,8 @@ struct BuildFixture {
     if (const char* limit = std::getenv("GLINT_BENCH_THREADS"))
       threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(std::atoi(limit)));
-    const Scene scene = make_preset("atrium");
-    for (const Instance& instance : scene.instances) {
-      const Mesh& m = scene.meshes[instance.mesh];
-      for (uint32_t index : m.indices) soup.push_back(vec3(instance.transform * vec4(m.positions[index], 1.0f)));
-    }
-    mesh = make_triangle_soup(soup);
+    geometry = rt::flatten_scene(make_preset("atrium"));
+    mesh = geometry.mesh();
   }
 };
 
