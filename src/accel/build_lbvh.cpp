@@ -27,6 +27,9 @@ struct CommonPrefix {
   }
 };
 
+// Leaves ahead whose boxes the sweep prefetches.
+inline constexpr uint32_t kBoxPrefetchDistance = 16;
+
 // Apetrei 2014, "Fast and simple agglomerative LBVH construction": every leaf climbs towards the
 // root; a node covering keys [first, last] joins the neighbour across whichever end shares the
 // longer prefix with it. Interior node b (nodes[leaf_count + b]) is the one whose split lies between
@@ -37,8 +40,6 @@ struct CommonPrefix {
 // is exactly Karras's tree, with no binary searches and with each node visited once, after both of
 // its children: boxes and anything else computed bottom-up come in the same sweep.
 //
-inline constexpr uint32_t kBoxPrefetchDistance = 16;
-
 // Fills `tree`; visit_leaf(leaf) and visit_interior(node) run once per node, children before
 // parents, with the node's children, prim and box already written.
 template <typename VisitLeaf, typename VisitInterior>
@@ -58,7 +59,8 @@ void build_radix_tree(BinaryTree& tree, const BuildInput& input, const MortonOrd
     for (uint32_t leaf = r.begin(); leaf != r.end(); ++leaf) {
       // The boxes are read in Morton order, so at random: fetching a few leaves ahead hides the
       // cache misses that were a third of this sweep.
-      if (leaf + kBoxPrefetchDistance < count) __builtin_prefetch(&input.boxes[order.prims[leaf + kBoxPrefetchDistance]]);
+      if (leaf + kBoxPrefetchDistance < count)
+        __builtin_prefetch(&input.boxes[order.prims[leaf + kBoxPrefetchDistance]]);
       TreeNode& leaf_node = tree.nodes[leaf];
       leaf_node.prim = order.prims[leaf];
       leaf_node.box = input.boxes[leaf_node.prim];
