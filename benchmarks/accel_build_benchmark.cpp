@@ -22,9 +22,7 @@
 #include "scene/presets.h"
 
 #include <benchmark/benchmark.h>
-#include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -72,13 +70,8 @@ void LbvhPhases(benchmark::State& state) {
   uint32_t bits = 0;
   for (auto _ : state) {
     auto start = Clock::now();
-    detail::ParallelArray<Aabb> boxes(mesh.triangle_count, detail::kForOverwrite);
-    triangle_boxes(mesh, boxes);
-    detail::ParallelArray<vec3> centroids(mesh.triangle_count, detail::kForOverwrite);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) centroids[i] = boxes[i].center();
-    });
-    const BuildInput input{boxes, centroids};
+    const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
+    const BuildInput input = bounds.input();
     boxes_ms += ms_since(start);
     const MortonOrder order = sort_by_morton(input.centroids);
     bits = order.bits;

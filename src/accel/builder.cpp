@@ -7,12 +7,9 @@
 #include "accel/build_sah.h"
 #include "accel/build_sbvh.h"
 #include "accel/build_trbvh.h"
-#include "accel/parallel_array.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <string>
@@ -59,15 +56,8 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options) {
   if (builder == BvhBuilder::sbvh) return build_sbvh(mesh, options);
   const auto start = std::chrono::steady_clock::now();
-  // Not triangle_bounds(): its std::vectors are zeroed (and paged in) by one thread, which on many
-  // cores took longer than some whole builds.
-  detail::ParallelArray<Aabb> boxes(mesh.triangle_count, detail::kForOverwrite);
-  triangle_boxes(mesh, boxes);
-  detail::ParallelArray<vec3> centroids(mesh.triangle_count, detail::kForOverwrite);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-    for (size_t i = r.begin(); i != r.end(); ++i) centroids[i] = boxes[i].center();
-  });
-  Bvh bvh = build_bvh(builder, BuildInput{boxes, centroids}, options);
+  const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
+  Bvh bvh = build_bvh(builder, bounds.input(), options);
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }

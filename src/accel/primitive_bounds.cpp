@@ -8,6 +8,16 @@
 #include <atomic>
 
 namespace glint::accel {
+namespace {
+
+// centroids[i] = boxes[i].center(), in parallel.
+void box_centres(std::span<const Aabb> boxes, std::span<vec3> centroids) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, boxes.size(), 4096), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) centroids[i] = boxes[i].center();
+  });
+}
+
+}  // namespace
 
 void triangle_boxes(const TriangleMesh& mesh, std::span<Aabb> boxes) {
   if (boxes.size() != mesh.triangle_count)
@@ -30,10 +40,20 @@ PrimitiveBounds triangle_bounds(const TriangleMesh& mesh) {
   bounds.boxes.resize(mesh.triangle_count);
   triangle_boxes(mesh, bounds.boxes);
   bounds.centroids.resize(mesh.triangle_count);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, bounds.boxes.size(), 4096), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) bounds.centroids[i] = bounds.boxes[i].center();
-  });
+  box_centres(bounds.boxes, bounds.centroids);
   return bounds;
 }
+
+namespace detail {
+
+ScratchBounds scratch_triangle_bounds(const TriangleMesh& mesh) {
+  ScratchBounds bounds{ParallelArray<Aabb>(mesh.triangle_count, kForOverwrite),
+                       ParallelArray<vec3>(mesh.triangle_count, kForOverwrite)};
+  triangle_boxes(mesh, bounds.boxes);
+  box_centres(bounds.boxes, bounds.centroids);
+  return bounds;
+}
+
+}  // namespace detail
 
 }  // namespace glint::accel

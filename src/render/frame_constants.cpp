@@ -15,9 +15,10 @@ vec2 clip_range_for(const Aabb& world_bounds) {
   return {near_plane, far_plane};
 }
 
-FrameConstants make_frame_constants(const Scene& scene, const FrameState& frame, int width, int height) {
+FrameConstants make_frame_constants(const Scene& scene, const Aabb& world_bounds, const FrameState& frame, int width,
+                                    int height) {
   if (width <= 0 || height <= 0) fail("frame constants: invalid viewport {}x{}", width, height);
-  const vec2 clip = clip_range_for(scene.world_bounds());
+  const vec2 clip = clip_range_for(world_bounds);
   FrameConstants constants;
   constants.view = frame.camera.view();
   constants.projection = glm::perspective(glm::radians(frame.camera.fov_y_degrees),

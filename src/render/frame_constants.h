@@ -43,7 +43,9 @@ static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants
 vec2 clip_range_for(const Aabb& world_bounds);
 
 // The constants of one frame: the camera's view and an OpenGL perspective projection (depth -1..1,
-// aspect width / height, the camera's vertical field of view), the light at the frame's position.
-FrameConstants make_frame_constants(const Scene& scene, const FrameState& frame, int width, int height);
+// aspect width / height, the camera's vertical field of view, clip range from `world_bounds`, the
+// scene's bounds this frame), the light at the frame's position.
+FrameConstants make_frame_constants(const Scene& scene, const Aabb& world_bounds, const FrameState& frame, int width,
+                                    int height);
 
 }  // namespace glint::render

@@ -33,12 +33,17 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
       shadow_cube_(settings.shadow_map_size, settings.shadow_cube_draw),
       shadow_mask_(targets_),
       lighting_(targets_),
-      shadow_chunks_(scene, gpu_scene_) {
+      shadow_chunks_(settings_.shadow_cube_draw == ShadowCubeDraw::per_face
+                         ? std::optional<ShadowChunks>(std::in_place, scene, gpu_scene_)
+                         : std::nullopt) {
   check_gl("raster pipeline set-up");
 }
 
 void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
-  frame_constants_ = make_frame_constants(*scene_, frame, targets_.width, targets_.height);
+  // The scene's bounds scan every vertex (deforming meshes move them): once per frame, for both the
+  // camera's clip range and the shadow cube's near distance.
+  const Aabb world_bounds = scene_->world_bounds();
+  frame_constants_ = make_frame_constants(*scene_, world_bounds, frame, targets_.width, targets_.height);
   glNamedBufferSubData(frame_constants_buffer_.id(), 0, sizeof(FrameConstants), &frame_constants_);
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants_buffer_.id());
 
@@ -48,7 +53,7 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
   gbuffer_.run(gpu_scene_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
-  shadow_cube_.run(gpu_scene_, frame.light_position, scene_->world_bounds(), &shadow_chunks_);
+  shadow_cube_.run(gpu_scene_, frame.light_position, world_bounds, shadow_chunks_ ? &*shadow_chunks_ : nullptr);
   shadow_mask_.run(shadow_cube_, settings_);
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "light");

@@ -22,6 +22,8 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
+#include <optional>
+
 namespace glint::render {
 
 // Every image the pipeline writes, for readback and debug views.
@@ -70,7 +72,9 @@ private:
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;
-  ShadowChunks shadow_chunks_;  // the scene in pieces for the per-face shadow draw's culling
+  // The scene in pieces for the per-face shadow draw's culling, made at load time; not made for
+  // the layered draw, which does not use them.
+  std::optional<ShadowChunks> shadow_chunks_;
 };
 
 }  // namespace glint::render

@@ -11,6 +11,7 @@
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
 #include "test_scenes.h"
+#include "thread_count_check.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -274,16 +275,8 @@ TEST(BottomUpBuilders, OutputDoesNotDependOnTheThreadCount) {
   const PrimitiveBounds bounds = triangle_bounds(scene.view());
   BuildOptions options;
   options.parallel_threshold = 64;
-  for (const auto build : {&build_lbvh, &build_trbvh, &build_ploc}) {
-    const Bvh parallel = build(bounds.input(), options);
-    Bvh serial;
-    tbb::task_arena(1).execute([&] { serial = build(bounds.input(), options); });
-    ASSERT_EQ(parallel.nodes.size(), serial.nodes.size()) << parallel.builder;
-    EXPECT_EQ(0, std::memcmp(parallel.nodes.data(), serial.nodes.data(), serial.nodes.size() * sizeof(BvhNode)))
-        << parallel.builder;
-    EXPECT_EQ(parallel.prim_indices, serial.prim_indices) << parallel.builder;
-    EXPECT_EQ(parallel.depth, serial.depth) << parallel.builder;
-  }
+  for (const testing::Builder build : {&build_lbvh, &build_trbvh, &build_ploc})
+    testing::expect_same_output_on_one_thread(build, bounds.input(), options);
 }
 
 TEST(Ploc, AWindowOverEverythingIsExactGreedyClustering) {
