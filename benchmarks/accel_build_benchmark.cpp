@@ -73,13 +73,12 @@ void LbvhPhases(benchmark::State& state) {
     const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
     const BuildInput input = bounds.input();
     boxes_ms += ms_since(start);
-    const MortonOrder order = sort_by_morton(input.centroids);
+    MortonOrder order = sort_by_morton(input.centroids);
     bits = order.bits;
     morton_ms += ms_since(start);
-    detail::ParallelArray<detail::SubtreeSummary> summaries;
-    detail::BinaryTree tree = detail::build_karras_tree(input, order, options, summaries);
+    const detail::RadixTree tree = detail::build_radix_tree(input, order, options);
     tree_ms += ms_since(start);
-    Bvh bvh = detail::flatten_tree(tree, std::move(summaries), options, "lbvh");
+    Bvh bvh = detail::flatten_radix_tree(tree, std::move(order.prims), options, "lbvh");
     flatten_ms += ms_since(start);
     benchmark::DoNotOptimize(bvh.nodes.data());
   }

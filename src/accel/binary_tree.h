@@ -78,6 +78,27 @@ inline SubtreeSummary summarise_interior(const Aabb& box, const SubtreeSummary& 
   return summary;
 }
 
+// The LBVH's radix tree without leaf nodes (build_lbvh.cpp). Leaf i is the i-th primitive in Morton
+// order, with its box at leaf_boxes[i]; ids below leaf_count are leaves, leaf_count + b is
+// interiors[b]. It takes less than half the memory of a BinaryTree with its summaries (whose fresh
+// pages were a large part of an LBVH build), and every subtree's primitives are a contiguous slice
+// of the Morton order, so that order is the flat Bvh's prim_indices as it is. The leaf boxes are
+// copied into that order once, by the sweep, so that neither the sweep's parents nor flattening
+// read the input's boxes at random.
+struct RadixInterior {
+  Aabb box;
+  uint32_t left = kNoNode;
+  uint32_t right = kNoNode;
+  SubtreeSummary summary;
+};
+
+struct RadixTree {
+  ParallelArray<RadixInterior> interiors;  // leaf_count - 1 of them
+  ParallelArray<Aabb> leaf_boxes;          // leaf_count of them, in Morton order
+  uint32_t leaf_count = 0;
+  uint32_t root = kNoNode;
+};
+
 // Calls visit_leaf(leaf) for every leaf, then visit_interior(node) for every interior node once
 // both of its children were visited, in parallel. Each thread climbs from its leaf and stops at a
 // node whose other child is still in progress; the last one to arrive goes on. A visitor may

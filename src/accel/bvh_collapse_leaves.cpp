@@ -1,5 +1,7 @@
 #include "accel/bvh_collapse_leaves.h"
 
+#include "core/error.h"
+
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -77,9 +79,60 @@ void limit_depth(Rebalancer& rebalancer, std::span<const SubtreeSummary> summari
   }
 }
 
-struct Flattener {
+// What the Flattener reads of one node: its box and summary, and its children when interior.
+struct FlatteningNode {
+  Aabb box;
+  SubtreeSummary summary;
+  uint32_t left = kNoNode;
+  uint32_t right = kNoNode;
+};
+
+// A single-primitive leaf, as the Flattener needs it (its cost is not read any more).
+constexpr SubtreeSummary kLeafSummary{0.0, 1, 1, 1, true};
+
+// A BinaryTree with its summaries. A collapsed subtree's primitives are gathered from its leaves.
+struct BinaryTreeNodes {
   const BinaryTree& tree;
   std::span<const SubtreeSummary> summaries;
+
+  FlatteningNode node(uint32_t id) const {
+    const TreeNode& n = tree.nodes[id];
+    return {n.box, summaries[id], n.left, n.right};
+  }
+  const SubtreeSummary& summary(uint32_t id) const { return summaries[id]; }
+
+  // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
+  // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
+  // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
+  uint32_t gather_prims(uint32_t id, uint32_t slot, Bvh& bvh) const {
+    const TreeNode& n = tree.nodes[id];
+    if (n.is_leaf()) {
+      bvh.prim_indices[slot] = n.prim;
+      return slot + 1;
+    }
+    return gather_prims(n.right, gather_prims(n.left, slot, bvh), bvh);
+  }
+};
+
+// A RadixTree: leaves are implicit, and prim_indices already hold the Morton order, which is every
+// subtree's primitives left to right, so there is nothing to gather.
+struct RadixTreeNodes {
+  const RadixTree& tree;
+
+  FlatteningNode node(uint32_t id) const {
+    if (id < tree.leaf_count) return {tree.leaf_boxes[id], kLeafSummary};
+    const RadixInterior& n = tree.interiors[id - tree.leaf_count];
+    return {n.box, n.summary, n.left, n.right};
+  }
+  const SubtreeSummary& summary(uint32_t id) const {
+    return id < tree.leaf_count ? kLeafSummary : tree.interiors[id - tree.leaf_count].summary;
+  }
+  void gather_prims(uint32_t, uint32_t, Bvh&) const {}
+};
+
+template <typename Nodes>
+struct Flattener {
+  const Nodes& nodes;
   Bvh& bvh;
   uint32_t parallel_threshold;
 
@@ -87,23 +140,22 @@ struct Flattener {
   // [descendants, descendants + out_nodes - 1): first its two children, then the left child's
   // descendants, then the right child's, which is the order top_down_builder produces.
   void emit(uint32_t node, uint32_t out, uint32_t descendants, uint32_t first_prim) const {
-    const SubtreeSummary& summary = summaries[node];
-    const TreeNode& n = tree.nodes[node];
+    const FlatteningNode n = nodes.node(node);
     BvhNode& flat = bvh.nodes[out];
     flat.set_bounds(n.box);
-    if (summary.collapse) {
+    if (n.summary.collapse) {
       flat.first = first_prim;
-      flat.prim_count = summary.prims;
-      gather_prims(node, first_prim);
+      flat.prim_count = n.summary.prims;
+      nodes.gather_prims(node, first_prim, bvh);
       return;
     }
     flat.first = descendants;
     flat.prim_count = 0;
-    const SubtreeSummary& left = summaries[n.left];
+    const SubtreeSummary& left = nodes.summary(n.left);
     const uint32_t left_descendants = descendants + 2;
     const uint32_t right_descendants = left_descendants + left.out_nodes - 1;
     const uint32_t right_first_prim = first_prim + left.prims;
-    if (summary.prims >= parallel_threshold) {
+    if (n.summary.prims >= parallel_threshold) {
       tbb::task_group group;
       group.run([&] { emit(n.left, descendants, left_descendants, first_prim); });
       emit(n.right, descendants + 1, right_descendants, right_first_prim);
@@ -113,19 +165,13 @@ struct Flattener {
       emit(n.right, descendants + 1, right_descendants, right_first_prim);
     }
   }
-
-  // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
-  // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
-  // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
-  uint32_t gather_prims(uint32_t node, uint32_t slot) const {
-    const TreeNode& n = tree.nodes[node];
-    if (n.is_leaf()) {
-      bvh.prim_indices[slot] = n.prim;
-      return slot + 1;
-    }
-    return gather_prims(n.right, gather_prims(n.left, slot));
-  }
 };
+
+template <typename Nodes>
+void flatten_from(const Nodes& nodes, uint32_t root, Bvh& bvh, const BuildOptions& options) {
+  const Flattener<Nodes> flattener{nodes, bvh, std::max(options.parallel_threshold, 2u)};
+  flattener.emit(root, 0, 1, 0);
+}
 
 }  // namespace
 
@@ -152,8 +198,23 @@ Bvh flatten_tree(BinaryTree& tree, ParallelArray<SubtreeSummary> summaries, cons
   bvh.nodes.resize(root.out_nodes);
   bvh.prim_indices.resize(tree.leaf_count);
   bvh.depth = root.height;
-  const Flattener flattener{tree, summaries, bvh, std::max(options.parallel_threshold, 2u)};
-  flattener.emit(tree.root, 0, 1, 0);
+  flatten_from(BinaryTreeNodes{tree, summaries}, tree.root, bvh, options);
+  return bvh;
+}
+
+Bvh flatten_radix_tree(const RadixTree& tree, UnzeroedVector<uint32_t> prims, const BuildOptions& options,
+                       const std::string& builder) {
+  Bvh bvh;
+  bvh.builder = builder;
+  if (tree.leaf_count == 0) return bvh;
+  const RadixTreeNodes nodes{tree};
+  const SubtreeSummary& root = nodes.summary(tree.root);
+  if (root.height > kMaxBvhDepth)
+    fail("accel: build_{}: the radix tree is {} levels deep, more than {}", builder, root.height, kMaxBvhDepth);
+  bvh.nodes.resize(root.out_nodes);
+  bvh.depth = root.height;
+  flatten_from(nodes, tree.root, bvh, options);
+  bvh.prim_indices = std::move(prims);
   return bvh;
 }
 

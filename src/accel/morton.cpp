@@ -56,7 +56,7 @@ constexpr uint32_t kCoarseShift = 33;
 MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mapping) {
   MortonOrder order;
   order.codes = detail::ParallelArray<uint64_t>(centroids.size(), detail::kForOverwrite);
-  order.prims = detail::ParallelArray<uint32_t>(centroids.size(), detail::kForOverwrite);
+  order.prims.resize(centroids.size());  // written below, not zeroed (unzeroed_vector.h)
   tbb::parallel_for(tbb::blocked_range<size_t>(0, centroids.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) {
       order.codes[i] = morton63(mapping(centroids[i]));

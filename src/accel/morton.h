@@ -5,6 +5,7 @@
 #include "accel/build_options.h"
 #include "accel/morton_code.h"
 #include "accel/parallel_array.h"
+#include "accel/unzeroed_vector.h"
 #include "core/math.h"
 
 #include <cstdint>
@@ -17,10 +18,11 @@ namespace glint::accel {
 
 // Centroids sorted along the Z curve. codes[i] is the code of primitive prims[i]; equal codes keep
 // the primitives in index order (the radix sort is stable), so the result is deterministic. The
-// arrays are filled by parallel loops from the start (parallel_array.h), not zeroed by one thread.
+// arrays are filled by parallel loops from the start (parallel_array.h), not zeroed by one thread;
+// prims is the container a Bvh keeps its prim_indices in, as lbvh's are exactly this order.
 struct MortonOrder {
   detail::ParallelArray<uint64_t> codes;
-  detail::ParallelArray<uint32_t> prims;
+  UnzeroedVector<uint32_t> prims;
   uint32_t bits = 0;  // 30 or 63
 };
 
