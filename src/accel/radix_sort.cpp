@@ -4,12 +4,15 @@
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <utility>
+#include <vector>
 
 namespace glint::accel {
 namespace {
@@ -21,12 +24,212 @@ constexpr uint32_t kDigits = 1u << kDigitBits;
 // left the last of three rounds mostly idle).
 constexpr size_t kChunkSize = 4096;
 
+// Inputs this long or longer are sorted bucket by bucket: one parallel pass on the top digit, then
+// every bucket on its own, in cache. Each of the LSD passes below would read and write the whole
+// array from memory instead (four passes for Morton codes).
+constexpr size_t kBucketSortMinCount = size_t{1} << 16;
+// A bucket up to this long is sorted by one thread in cache (12 bytes a pair, scratch included);
+// a longer one (a skewed distribution) by the parallel sort again.
+constexpr size_t kLocalSortMaxCount = size_t{1} << 16;
+// Digits of the in-cache passes: 2048 counters fit in L1 and two passes cover 22 bits.
+constexpr uint32_t kLocalDigitBits = 11;
+constexpr uint32_t kMaxLocalPasses = (64 + kLocalDigitBits - 1) / kLocalDigitBits;
+// Buckets this short are insertion-sorted.
+constexpr size_t kInsertionSortMaxCount = 32;
+
 using Histogram = std::array<uint32_t, kDigits>;
+
+// Bits [low_bit, high_bit) of `key`, shifted down.
+uint64_t bits_of(uint64_t key, uint32_t low_bit, uint32_t high_bit) {
+  const uint64_t below_high = high_bit == 64 ? key : key & ((uint64_t{1} << high_bit) - 1);
+  return below_high >> low_bit;
+}
 
 // The digit of `key` at `shift`, keeping only bits below high_bit (a last digit may reach past it).
 uint32_t digit_of(uint64_t key, uint32_t shift, uint32_t high_bit) {
-  const uint64_t below_high = high_bit == 64 ? key : key & ((uint64_t{1} << high_bit) - 1);
-  return static_cast<uint32_t>(below_high >> shift) & (kDigits - 1);
+  return static_cast<uint32_t>(bits_of(key, shift, high_bit)) & (kDigits - 1);
+}
+
+struct PairArrays {
+  uint64_t* keys;
+  uint32_t* values;
+};
+
+// One parallel, stable scatter of `count` pairs by their 8-bit digit at `shift` from `in` to `out`.
+// Returns the number of pairs with each digit, or nothing when every pair has the same digit (the
+// pass would not move anything, so it writes nothing).
+std::optional<Histogram> scatter_by_digit(PairArrays in, PairArrays out, size_t count, uint32_t shift,
+                                          uint32_t high_bit, std::vector<Histogram>& offsets) {
+  const size_t chunk_count = (count + kChunkSize - 1) / kChunkSize;
+  offsets.resize(chunk_count);  // counts, then (after the prefix sum) output offsets
+  const auto chunk_range = [&](size_t chunk) {
+    return std::pair{chunk * kChunkSize, std::min(count, (chunk + 1) * kChunkSize)};
+  };
+  tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
+    Histogram& histogram = offsets[chunk];
+    histogram.fill(0);
+    const auto [begin, end] = chunk_range(chunk);
+    for (size_t i = begin; i != end; ++i) ++histogram[digit_of(in.keys[i], shift, high_bit)];
+  });
+
+  // Exclusive prefix sum in (digit, chunk) order: all keys with a smaller digit come first, then
+  // those of the same digit from earlier chunks, which is what makes the pass stable.
+  Histogram totals{};
+  uint32_t running = 0;
+  for (uint32_t digit = 0; digit < kDigits; ++digit) {
+    for (size_t chunk = 0; chunk < chunk_count; ++chunk) {
+      const uint32_t chunk_count_of_digit = offsets[chunk][digit];
+      offsets[chunk][digit] = running;
+      running += chunk_count_of_digit;
+      totals[digit] += chunk_count_of_digit;
+    }
+    if (totals[digit] == count) return std::nullopt;
+  }
+
+  tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
+    Histogram& next = offsets[chunk];
+    const auto [begin, end] = chunk_range(chunk);
+    for (size_t i = begin; i != end; ++i) {
+      const uint32_t slot = next[digit_of(in.keys[i], shift, high_bit)]++;
+      out.keys[slot] = in.keys[i];
+      out.values[slot] = in.values[i];
+    }
+  });
+  return totals;
+}
+
+void copy_pairs(PairArrays from, PairArrays to, size_t count) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, kChunkSize), [&](const tbb::blocked_range<size_t>& r) {
+    std::copy(from.keys + r.begin(), from.keys + r.end(), to.keys + r.begin());
+    std::copy(from.values + r.begin(), from.values + r.end(), to.values + r.begin());
+  });
+}
+
+// LSD passes of 8-bit digits from low_bit up, alternating between `data` and same-sized buffers.
+void sort_by_lsd_passes(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit) {
+  // Filled in parallel, not by one thread.
+  detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
+  detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
+  PairArrays in = data;
+  PairArrays out{key_buffer.data(), value_buffer.data()};
+  std::vector<Histogram> offsets;
+  for (uint32_t shift = low_bit; shift < high_bit; shift += kDigitBits)
+    if (scatter_by_digit(in, out, count, shift, high_bit, offsets)) std::swap(in, out);
+  // An odd number of passes moved anything: the result is in the buffers.
+  if (in.keys != data.keys) copy_pairs(in, data, count);
+}
+
+// Scratch for sort_in_cache: one per thread, as long as the longest bucket it sorted.
+struct LocalScratch {
+  std::vector<uint64_t> keys;
+  std::vector<uint32_t> values;
+};
+
+// Sorts the `count` pairs at `from` by bits [low_bit, high_bit) into `to`, stably, by one thread:
+// LSD passes of kLocalDigitBits, their histograms counted in one read, passes whose digit never
+// changes skipped, and the ping-pong arranged so that the last pass writes `to`.
+void sort_in_cache(PairArrays from, PairArrays to, size_t count, uint32_t low_bit, uint32_t high_bit,
+                   LocalScratch& scratch) {
+  if (count <= kInsertionSortMaxCount) {
+    std::copy(from.keys, from.keys + count, to.keys);
+    std::copy(from.values, from.values + count, to.values);
+    for (size_t i = 1; i < count; ++i) {
+      const uint64_t key = to.keys[i];
+      const uint32_t value = to.values[i];
+      const uint64_t bits = bits_of(key, low_bit, high_bit);
+      size_t j = i;
+      for (; j > 0 && bits_of(to.keys[j - 1], low_bit, high_bit) > bits; --j) {
+        to.keys[j] = to.keys[j - 1];
+        to.values[j] = to.values[j - 1];
+      }
+      to.keys[j] = key;
+      to.values[j] = value;
+    }
+    return;
+  }
+  constexpr uint32_t kLocalDigits = 1u << kLocalDigitBits;
+  using LocalHistogram = std::array<uint32_t, kLocalDigits>;
+  const uint32_t pass_count = (high_bit - low_bit + kLocalDigitBits - 1) / kLocalDigitBits;
+  std::array<LocalHistogram, kMaxLocalPasses> histograms;
+  for (uint32_t pass = 0; pass < pass_count; ++pass) histograms[pass].fill(0);
+  const auto local_digit = [&](uint64_t key, uint32_t pass) {
+    return static_cast<uint32_t>(bits_of(key, low_bit + pass * kLocalDigitBits, high_bit)) & (kLocalDigits - 1);
+  };
+  for (size_t i = 0; i < count; ++i)
+    for (uint32_t pass = 0; pass < pass_count; ++pass) ++histograms[pass][local_digit(from.keys[i], pass)];
+  std::array<uint32_t, kMaxLocalPasses> moving{};
+  uint32_t moving_count = 0;
+  for (uint32_t pass = 0; pass < pass_count; ++pass)
+    if (std::find(histograms[pass].begin(), histograms[pass].end(), count) == histograms[pass].end())
+      moving[moving_count++] = pass;
+  if (moving_count == 0) {
+    std::copy(from.keys, from.keys + count, to.keys);
+    std::copy(from.values, from.values + count, to.values);
+    return;
+  }
+  if (scratch.keys.size() < count) {
+    scratch.keys.resize(count);
+    scratch.values.resize(count);
+  }
+  const PairArrays spare{scratch.keys.data(), scratch.values.data()};
+  PairArrays in = from;
+  for (uint32_t m = 0; m < moving_count; ++m) {
+    // Counting back from the last pass, which writes `to`, the targets alternate with the spare.
+    const PairArrays out = (moving_count - m) % 2 == 1 ? to : spare;
+    const uint32_t pass = moving[m];
+    LocalHistogram& next = histograms[pass];
+    uint32_t running = 0;
+    for (uint32_t& slot : next) running += std::exchange(slot, running);
+    for (size_t i = 0; i < count; ++i) {
+      const uint32_t slot = next[local_digit(in.keys[i], pass)]++;
+      out.keys[slot] = in.keys[i];
+      out.values[slot] = in.values[i];
+    }
+    in = out;
+  }
+}
+
+void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit);
+
+// One parallel pass on the top 8 bits into buffers, then every bucket sorted by the remaining bits
+// back into `data`: in cache by one thread, or, when long, by sort_pairs again.
+void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit) {
+  const uint32_t top_shift = high_bit - kDigitBits;
+  detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
+  detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
+  const PairArrays buckets{key_buffer.data(), value_buffer.data()};
+  std::vector<Histogram> offsets;
+  const std::optional<Histogram> sizes = scatter_by_digit(data, buckets, count, top_shift, high_bit, offsets);
+  if (!sizes) {  // one bucket: the top bits are already in order
+    sort_pairs(data, count, low_bit, top_shift);
+    return;
+  }
+  std::array<size_t, kDigits + 1> starts{};
+  for (uint32_t digit = 0; digit < kDigits; ++digit) starts[digit + 1] = starts[digit] + (*sizes)[digit];
+  tbb::enumerable_thread_specific<LocalScratch> scratch;
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, kDigits, 1), [&](const tbb::blocked_range<uint32_t>& r) {
+    for (uint32_t digit = r.begin(); digit != r.end(); ++digit) {
+      const size_t begin = starts[digit], size = starts[digit + 1] - begin;
+      if (size == 0) continue;
+      const PairArrays from{buckets.keys + begin, buckets.values + begin};
+      const PairArrays to{data.keys + begin, data.values + begin};
+      if (size <= kLocalSortMaxCount) {
+        sort_in_cache(from, to, size, low_bit, top_shift, scratch.local());
+      } else {
+        sort_pairs(from, size, low_bit, top_shift);
+        copy_pairs(from, to, size);
+      }
+    }
+  });
+}
+
+// Stable sort of `count` pairs by bits [low_bit, high_bit) of their keys, in place.
+void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit) {
+  if (count < 2 || low_bit >= high_bit) return;
+  if (count >= kBucketSortMinCount && high_bit - low_bit > kDigitBits)
+    sort_by_buckets(data, count, low_bit, high_bit);
+  else
+    sort_by_lsd_passes(data, count, low_bit, high_bit);
 }
 
 }  // namespace
@@ -43,64 +246,7 @@ void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> valu
   if (low_bit >= high_bit || high_bit > 64)
     fail("accel: radix_sort_pairs: bits [{}, {}) are not a range within [0, 64)", low_bit, high_bit);
   if (keys.size() >= (size_t{1} << 32)) fail("accel: radix_sort_pairs: {} pairs, at most 2^32 - 1", keys.size());
-  const size_t count = keys.size();
-  if (count < 2) return;
-
-  const size_t chunk_count = (count + kChunkSize - 1) / kChunkSize;
-  std::vector<Histogram> offsets(chunk_count);  // counts, then (after the prefix sum) output offsets
-  // Passes alternate between the caller's arrays and these (filled in parallel, not by one thread).
-  detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
-  detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
-  uint64_t* keys_in = keys.data();
-  uint32_t* values_in = values.data();
-  uint64_t* keys_out = key_buffer.data();
-  uint32_t* values_out = value_buffer.data();
-  const auto chunk_range = [&](size_t chunk) {
-    return std::pair{chunk * kChunkSize, std::min(count, (chunk + 1) * kChunkSize)};
-  };
-
-  for (uint32_t shift = low_bit; shift < high_bit; shift += kDigitBits) {
-    tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
-      Histogram& histogram = offsets[chunk];
-      histogram.fill(0);
-      const auto [begin, end] = chunk_range(chunk);
-      for (size_t i = begin; i != end; ++i) ++histogram[digit_of(keys_in[i], shift, high_bit)];
-    });
-
-    // Exclusive prefix sum in (digit, chunk) order: all keys with a smaller digit come first, then
-    // those of the same digit from earlier chunks, which is what makes the pass stable.
-    uint32_t running = 0;
-    bool single_digit = false;
-    for (uint32_t digit = 0; digit < kDigits; ++digit) {
-      uint32_t digit_total = 0;
-      for (size_t chunk = 0; chunk < chunk_count; ++chunk) {
-        const uint32_t chunk_count_of_digit = offsets[chunk][digit];
-        offsets[chunk][digit] = running;
-        running += chunk_count_of_digit;
-        digit_total += chunk_count_of_digit;
-      }
-      if (digit_total == count) single_digit = true;
-    }
-    if (single_digit) continue;  // every key has this digit: the pass would not move anything
-
-    tbb::parallel_for(size_t{0}, chunk_count, [&](size_t chunk) {
-      Histogram& next = offsets[chunk];
-      const auto [begin, end] = chunk_range(chunk);
-      for (size_t i = begin; i != end; ++i) {
-        const uint32_t slot = next[digit_of(keys_in[i], shift, high_bit)]++;
-        keys_out[slot] = keys_in[i];
-        values_out[slot] = values_in[i];
-      }
-    });
-    std::swap(keys_in, keys_out);
-    std::swap(values_in, values_out);
-  }
-  if (keys_in == keys.data()) return;
-  // An odd number of passes moved anything: the result is in the buffers.
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, count, kChunkSize), [&](const tbb::blocked_range<size_t>& r) {
-    std::copy(keys_in + r.begin(), keys_in + r.end(), keys.data() + r.begin());
-    std::copy(values_in + r.begin(), values_in + r.end(), values.data() + r.begin());
-  });
+  sort_pairs(PairArrays{keys.data(), values.data()}, keys.size(), low_bit, high_bit);
 }
 
 }  // namespace glint::accel

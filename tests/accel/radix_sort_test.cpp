@@ -72,6 +72,27 @@ TEST(RadixSort, ByBitsOrdersByThoseBitsAloneAndIsStable) {
   EXPECT_THROW(radix_sort_pairs_by_bits(keys, values, 0, 65), Error);
 }
 
+TEST(RadixSort, SkewedKeysWithOneHugeBucketAndManyTinyOnes) {
+  // Long inputs are sorted by their top 8 bits first, then bucket by bucket: here one bucket holds
+  // most keys (sorted by the parallel sort again), the others a handful each (insertion sort).
+  std::mt19937_64 rng(11);
+  std::vector<uint64_t> keys(300000);
+  for (uint64_t& key : keys) {
+    const uint64_t low = rng() & ((uint64_t{1} << 40) - 1);
+    key = (rng() % 5 != 0 ? uint64_t{0x5a} << 40 : (rng() & 0xff) << 40) | (low % 1000003);
+  }
+  std::vector<uint32_t> values(keys.size());
+  std::iota(values.begin(), values.end(), 0u);
+  std::vector<std::pair<uint64_t, uint32_t>> expected;
+  for (size_t i = 0; i < keys.size(); ++i) expected.emplace_back(keys[i], values[i]);
+  std::sort(expected.begin(), expected.end());
+  radix_sort_pairs(keys, values, 48);
+  for (size_t i = 0; i < keys.size(); ++i) {
+    ASSERT_EQ(keys[i], expected[i].first) << "at " << i;
+    ASSERT_EQ(values[i], expected[i].second) << "at " << i;
+  }
+}
+
 TEST(RadixSort, SortedAndReversedInputs) {
   std::vector<uint64_t> keys(70000);
   std::iota(keys.begin(), keys.end(), uint64_t{1} << 40);
