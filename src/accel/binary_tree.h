@@ -79,24 +79,31 @@ inline SubtreeSummary summarise_interior(const Aabb& box, const SubtreeSummary& 
 }
 
 // The LBVH's radix tree without leaf nodes (build_lbvh.cpp). Leaf i is the i-th primitive in Morton
-// order, with its box at leaf_boxes[i]; ids below leaf_count are leaves, leaf_count + b is
-// interiors[b]. It takes less than half the memory of a BinaryTree with its summaries (whose fresh
-// pages were a large part of an LBVH build), and every subtree's primitives are a contiguous slice
-// of the Morton order, so that order is the flat Bvh's prim_indices as it is. The leaf boxes are
-// copied into that order once, by the sweep, so that neither the sweep's parents nor flattening
-// read the input's boxes at random.
+// order, with its box at leaf_boxes[i]; ids below leaf_count are leaves, leaf_count + b is the
+// interior node whose split lies after key b, interiors[b]. Only what flattening reads is kept, in
+// arrays that no cache line straddles: a node's box and children (32 bytes) and the size of its
+// flattened subtree; the collapse costs and heights live only during the sweep, and a node's
+// primitive count is its key range. About 60 bytes a primitive, against 128 for a BinaryTree with
+// its summaries, whose fresh pages and cache misses were most of an LBVH build. Every subtree's
+// primitives are a contiguous slice of the Morton order, so that order is the flat Bvh's
+// prim_indices as it is. The leaf boxes are copied into that order once, by the sweep, so that
+// neither the sweep's parents nor flattening read the input's boxes at random.
 struct RadixInterior {
   Aabb box;
   uint32_t left = kNoNode;
   uint32_t right = kNoNode;
-  SubtreeSummary summary;
 };
+static_assert(sizeof(RadixInterior) == 32);
 
 struct RadixTree {
   ParallelArray<RadixInterior> interiors;  // leaf_count - 1 of them
-  ParallelArray<Aabb> leaf_boxes;          // leaf_count of them, in Morton order
+  // Per interior node, SubtreeSummary::out_nodes: 1 when its subtree becomes one leaf (an interior
+  // node kept as such has at least 3).
+  ParallelArray<uint32_t> out_nodes;
+  ParallelArray<Aabb> leaf_boxes;  // leaf_count of them, in Morton order
   uint32_t leaf_count = 0;
   uint32_t root = kNoNode;
+  uint32_t height = 0;  // levels of the flattened tree (SubtreeSummary::height of the root)
 };
 
 // Calls visit_leaf(leaf) for every leaf, then visit_interior(node) for every interior node once

@@ -44,7 +44,7 @@ void build_binary_radix_tree(BinaryTree& tree, const BuildInput& input, const Mo
         tree.nodes[child].parent = parent;
         (is_left_child ? tree.nodes[parent].left : tree.nodes[parent].right) = child;
       },
-      [&](uint32_t node) {
+      [&](uint32_t node, uint32_t, uint32_t) {
         TreeNode& interior = tree.nodes[node];
         interior.prim = kNoNode;
         interior.box = tree.nodes[interior.left].box;
@@ -83,13 +83,23 @@ RadixTree build_radix_tree(const BuildInput& input, const MortonOrder& order, co
   const auto count = static_cast<uint32_t>(order.prims.size());
   tree.leaf_count = count;
   if (count == 0) return tree;
-  // The sweep writes every element of both.
+  // The sweep writes every element of these.
   tree.interiors = ParallelArray<RadixInterior>(size_t{count} - 1, kForOverwrite);
+  tree.out_nodes = ParallelArray<uint32_t>(size_t{count} - 1, kForOverwrite);
   tree.leaf_boxes = ParallelArray<Aabb>(count, kForOverwrite);
-  const auto interior = [&](uint32_t id) -> RadixInterior& { return tree.interiors[id - count]; };
-  const auto box_of = [&](uint32_t id) -> const Aabb& { return id < count ? tree.leaf_boxes[id] : interior(id).box; };
-  const auto summary_of = [&](uint32_t id) {
-    return id < count ? summarise_leaf(tree.leaf_boxes[id], options) : interior(id).summary;
+  // What only the sweep needs of a node: its collapse cost and its height, which stays under 100
+  // (each level down lengthens the common prefix of keys of 64 + 32 bits).
+  ParallelArray<double> costs(size_t{count} - 1, kForOverwrite);
+  ParallelArray<uint8_t> heights(size_t{count} - 1, kForOverwrite);
+  // The SubtreeSummary of node `id` over keys [first, last], rebuilt from those arrays, so that the
+  // collapse rule is summarise_interior's, exactly as for a BinaryTree.
+  const auto summary_of = [&](uint32_t id, uint32_t first, uint32_t last) {
+    if (id < count) return summarise_leaf(tree.leaf_boxes[id], options);
+    const uint32_t b = id - count;
+    return SubtreeSummary{costs[b], last - first + 1, tree.out_nodes[b], heights[b], tree.out_nodes[b] == 1};
+  };
+  const auto box_of = [&](uint32_t id) -> const Aabb& {
+    return id < count ? tree.leaf_boxes[id] : tree.interiors[id - count].box;
   };
   tree.root = sweep_radix_tree(
       order.codes,
@@ -98,14 +108,21 @@ RadixTree build_radix_tree(const BuildInput& input, const MortonOrder& order, co
         tree.leaf_boxes[leaf] = input.boxes[order.prims[leaf]];
       },
       [&](uint32_t child, uint32_t parent, bool is_left_child) {
-        (is_left_child ? interior(parent).left : interior(parent).right) = child;
+        RadixInterior& p = tree.interiors[parent - count];
+        (is_left_child ? p.left : p.right) = child;
       },
-      [&](uint32_t node) {
-        RadixInterior& n = interior(node);
+      [&](uint32_t node, uint32_t first, uint32_t last) {
+        const uint32_t split = node - count;
+        RadixInterior& n = tree.interiors[split];
         n.box = box_of(n.left);
         n.box.extend(box_of(n.right));
-        n.summary = summarise_interior(n.box, summary_of(n.left), summary_of(n.right), options);
+        const SubtreeSummary summary = summarise_interior(n.box, summary_of(n.left, first, split),
+                                                          summary_of(n.right, split + 1, last), options);
+        costs[split] = summary.cost;
+        tree.out_nodes[split] = summary.out_nodes;
+        heights[split] = static_cast<uint8_t>(summary.height);
       });
+  tree.height = tree.root < count ? 1 : heights[tree.root - count];
   return tree;
 }
 
@@ -117,7 +134,7 @@ Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
   MortonOrder order = sort_by_morton(input.centroids);
   const detail::RadixTree tree = detail::build_radix_tree(input, order, options);
   Bvh bvh;
-  if (tree.leaf_count > 1 && tree.interiors[tree.root - tree.leaf_count].summary.height > kMaxBvhDepth) {
+  if (tree.height > kMaxBvhDepth) {
     // Deeper than traversal allows (rare: 63-bit codes and the index tie-break allow about 95
     // levels): the BinaryTree path can rebalance.
     detail::ParallelArray<detail::SubtreeSummary> summaries;

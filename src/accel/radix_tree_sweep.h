@@ -40,8 +40,9 @@ struct CommonPrefix {
 // bottom-up come in the same sweep.
 //
 // In parallel, calls visit_leaf(leaf) once per leaf, link(child, parent, is_left_child) once per
-// node but the root, and visit_interior(node) once per interior node after both of its children
-// were linked and visited (what they wrote is visible to it). Returns the root's id; codes must not
+// node but the root, and visit_interior(node, first, last) once per interior node, with its keys
+// [first, last], after both of its children were linked and visited (what they wrote is visible to
+// it). Returns the root's id; codes must not
 // be empty.
 template <typename VisitLeaf, typename Link, typename VisitInterior>
 uint32_t sweep_radix_tree(std::span<const uint64_t> codes, VisitLeaf&& visit_leaf, Link&& link,
@@ -78,7 +79,7 @@ uint32_t sweep_radix_tree(std::span<const uint64_t> codes, VisitLeaf&& visit_lea
         }
         (is_left_child ? last : first) = sibling_far_end - 1;
         node = parent;
-        visit_interior(node);
+        visit_interior(node, first, last);
       }
       if (first == 0 && last == last_key) root.store(node, std::memory_order_relaxed);
     }
