@@ -8,9 +8,12 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 namespace glint::accel {
 namespace {
@@ -66,30 +69,12 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
   return order;
 }
 
-// Sorted neighbours whose 30-bit codes are equal but whose 63-bit codes differ: the pairs 63 bits
-// would put in order and 30 bits leave in index order (see kMaxMorton30CollisionFraction). Pairs
-// with equal 63-bit codes (identical centroids among them) gain nothing from 63 bits and do not
-// count. Codes alone, so no centroid is gathered.
-size_t count_coarse_collisions(const MortonOrder& order) {
-  if (order.codes.size() < 2) return 0;
-  return tbb::parallel_reduce(
-      tbb::blocked_range<size_t>(1, order.codes.size(), 8192), size_t{0},
-      [&](const tbb::blocked_range<size_t>& r, size_t acc) {
-        for (size_t i = r.begin(); i != r.end(); ++i) {
-          const uint64_t a = order.codes[i - 1], b = order.codes[i];
-          acc += a >> kCoarseShift == b >> kCoarseShift && a != b;
-        }
-        return acc;
-      },
-      std::plus<>());
-}
-
-// Runs of this many pairs or fewer are finished by insertion sort, longer ones by a radix sort of
-// their own.
+// Runs of this many pairs or fewer are sorted by insertion sort, longer ones by a radix sort (or,
+// by primitive, std::sort) of their own.
 constexpr size_t kInsertionSortRun = 64;
 
 // Orders one run of equal 30-bit codes by the remaining 33 bits, stably (the run is in index order).
-void sort_run(std::span<uint64_t> codes, std::span<uint32_t> prims) {
+void sort_run_by_fine_bits(std::span<uint64_t> codes, std::span<uint32_t> prims) {
   if (codes.size() > kInsertionSortRun) {
     radix_sort_pairs_by_bits(codes, prims, 0, kCoarseShift);
     return;
@@ -101,10 +86,47 @@ void sort_run(std::span<uint64_t> codes, std::span<uint32_t> prims) {
     }
 }
 
-// After the sort by the top 30 bits, sorts every run of equal top bits by the low 33: the result is
-// the stable sort by all 63 bits, for the price of the runs alone. Runs are found by the chunk they
+// Puts one run of equal 30-bit codes back in index order, the 30-bit stable order.
+void sort_run_by_prim(std::span<uint64_t> codes, std::span<uint32_t> prims) {
+  if (codes.size() > kInsertionSortRun) {
+    std::vector<std::pair<uint32_t, uint64_t>> pairs(codes.size());
+    for (size_t i = 0; i < codes.size(); ++i) pairs[i] = {prims[i], codes[i]};
+    std::sort(pairs.begin(), pairs.end());
+    for (size_t i = 0; i < codes.size(); ++i) std::tie(prims[i], codes[i]) = pairs[i];
+    return;
+  }
+  for (size_t i = 1; i < codes.size(); ++i)
+    for (size_t j = i; j > 0 && prims[j - 1] > prims[j]; --j) {
+      std::swap(codes[j - 1], codes[j]);
+      std::swap(prims[j - 1], prims[j]);
+    }
+}
+
+// For a range of the arrays sorted by the top 30 bits that holds whole runs of equal top bits:
+// counts the neighbours whose 30-bit codes are equal but whose 63-bit codes differ (the pairs 63 bits
+// would put in order and 30 bits leave in index order, see kMaxMorton30CollisionFraction; pairs with
+// equal 63-bit codes, identical centroids among them, gain nothing from 63 bits and do not count),
+// then sorts every run by the low 33 bits. Done range by range as the sort finishes them, in cache;
+// sort_by_morton undoes it where 30 bits win.
+size_t count_and_refine_runs(std::span<uint64_t> codes, std::span<uint32_t> prims) {
+  size_t collisions = 0;
+  size_t begin = 0;
+  while (begin < codes.size()) {
+    size_t end = begin + 1;
+    while (end < codes.size() && codes[end] >> kCoarseShift == codes[begin] >> kCoarseShift) {
+      collisions += codes[end] != codes[end - 1];
+      ++end;
+    }
+    if (end - begin > 1) sort_run_by_fine_bits(codes.subspan(begin, end - begin), prims.subspan(begin, end - begin));
+    begin = end;
+  }
+  return collisions;
+}
+
+// Sorts every run of equal top 30 bits with sort_run, in parallel. Runs are found by the chunk they
 // start in, so each is sorted once, by one task, even where it crosses into the next chunk.
-void sort_coarse_runs(MortonOrder& order) {
+template <typename SortRun>
+void sort_coarse_runs(MortonOrder& order, SortRun&& sort_run) {
   const size_t count = order.codes.size();
   const std::span<uint64_t> codes(order.codes);
   const std::span<uint32_t> prims(order.prims);
@@ -124,21 +146,29 @@ void sort_coarse_runs(MortonOrder& order) {
 }  // namespace
 
 MortonOrder sort_by_morton(std::span<const vec3> centroids) {
-  // Both code lengths from one set of 63-bit codes: sorted by their top 30 bits first (which is the
-  // 30-bit order), then, only where too many of those collide, every run of equal top bits by the
-  // rest. A separate 30-bit sort followed by a full 63-bit one cost twice the codes and 12 passes.
+  // Both code lengths from one set of 63-bit codes, sorted by their top 30 bits (which are the
+  // 30-bit codes) with every run of equal top bits then sorted by the rest as soon as its part of
+  // the sort is done, in cache: the stable 63-bit order. Where few enough neighbours collide, 30
+  // bits win and the runs go back to index order. A separate 30-bit sort followed by a full 63-bit
+  // one cost twice the codes and 12 passes over memory; refining the runs in a pass of their own
+  // cost another pass, and counting the collisions one more.
   MortonOrder order = fine_codes(centroids, unit_mapping(centroids));
-  radix_sort_pairs_by_bits(order.codes, order.prims, kCoarseShift, 64);
-  const size_t collisions = count_coarse_collisions(order);
-  if (static_cast<double>(collisions) <= kMaxMorton30CollisionFraction * static_cast<double>(centroids.size())) {
-    order.bits = 30;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, order.codes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) order.codes[i] >>= kCoarseShift;
-    });
+  std::atomic<size_t> collisions{0};
+  const std::span<uint64_t> codes(order.codes);
+  const std::span<uint32_t> prims(order.prims);
+  radix_sort_pairs_by_bits(codes, prims, kCoarseShift, 64, [&](size_t begin, size_t end) {
+    collisions.fetch_add(count_and_refine_runs(codes.subspan(begin, end - begin), prims.subspan(begin, end - begin)),
+                         std::memory_order_relaxed);
+  });
+  if (static_cast<double>(collisions.load()) > kMaxMorton30CollisionFraction * static_cast<double>(centroids.size())) {
+    order.bits = 63;
     return order;
   }
-  order.bits = 63;
-  sort_coarse_runs(order);
+  order.bits = 30;
+  sort_coarse_runs(order, sort_run_by_prim);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.codes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) order.codes[i] >>= kCoarseShift;
+  });
   return order;
 }
 

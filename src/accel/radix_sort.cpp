@@ -189,11 +189,13 @@ void sort_in_cache(PairArrays from, PairArrays to, size_t count, uint32_t low_bi
   }
 }
 
-void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit);
+// `visit` (may be null) gets ranges of `data`, as radix_sort_pairs_by_bits documents.
+void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit, const SortedRangeVisitor* visit);
 
 // One parallel pass on the top 8 bits into buffers, then every bucket sorted by the remaining bits
 // back into `data`: in cache by one thread, or, when long, by sort_pairs again.
-void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit) {
+void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit,
+                     const SortedRangeVisitor* visit) {
   const uint32_t top_shift = high_bit - kDigitBits;
   detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
   detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
@@ -201,7 +203,7 @@ void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t h
   std::vector<Histogram> offsets;
   const std::optional<Histogram> sizes = scatter_by_digit(data, buckets, count, top_shift, high_bit, offsets);
   if (!sizes) {  // one bucket: the top bits are already in order
-    sort_pairs(data, count, low_bit, top_shift);
+    sort_pairs(data, count, low_bit, top_shift, visit);
     return;
   }
   std::array<size_t, kDigits + 1> starts{};
@@ -216,20 +218,30 @@ void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t h
       if (size <= kLocalSortMaxCount) {
         sort_in_cache(from, to, size, low_bit, top_shift, scratch.local());
       } else {
-        sort_pairs(from, size, low_bit, top_shift);
+        sort_pairs(from, size, low_bit, top_shift, nullptr);
         copy_pairs(from, to, size);
       }
+      if (visit) (*visit)(begin, begin + size);
     }
   });
 }
 
 // Stable sort of `count` pairs by bits [low_bit, high_bit) of their keys, in place.
-void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit) {
-  if (count < 2 || low_bit >= high_bit) return;
-  if (count >= kBucketSortMinCount && high_bit - low_bit > kDigitBits)
-    sort_by_buckets(data, count, low_bit, high_bit);
-  else
-    sort_by_lsd_passes(data, count, low_bit, high_bit);
+void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit, const SortedRangeVisitor* visit) {
+  if (count >= kBucketSortMinCount && high_bit - low_bit > kDigitBits) {
+    sort_by_buckets(data, count, low_bit, high_bit, visit);
+    return;
+  }
+  if (count >= 2 && low_bit < high_bit) sort_by_lsd_passes(data, count, low_bit, high_bit);
+  if (visit && count > 0) (*visit)(0, count);
+}
+
+void check_arguments(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit, uint32_t high_bit) {
+  if (keys.size() != values.size())
+    fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
+  if (low_bit >= high_bit || high_bit > 64)
+    fail("accel: radix_sort_pairs: bits [{}, {}) are not a range within [0, 64)", low_bit, high_bit);
+  if (keys.size() >= (size_t{1} << 32)) fail("accel: radix_sort_pairs: {} pairs, at most 2^32 - 1", keys.size());
 }
 
 }  // namespace
@@ -241,12 +253,14 @@ void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint
 
 void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
                               uint32_t high_bit) {
-  if (keys.size() != values.size())
-    fail("accel: radix_sort_pairs: {} keys but {} values", keys.size(), values.size());
-  if (low_bit >= high_bit || high_bit > 64)
-    fail("accel: radix_sort_pairs: bits [{}, {}) are not a range within [0, 64)", low_bit, high_bit);
-  if (keys.size() >= (size_t{1} << 32)) fail("accel: radix_sort_pairs: {} pairs, at most 2^32 - 1", keys.size());
-  sort_pairs(PairArrays{keys.data(), values.data()}, keys.size(), low_bit, high_bit);
+  check_arguments(keys, values, low_bit, high_bit);
+  sort_pairs(PairArrays{keys.data(), values.data()}, keys.size(), low_bit, high_bit, nullptr);
+}
+
+void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
+                              uint32_t high_bit, const SortedRangeVisitor& visit) {
+  check_arguments(keys, values, low_bit, high_bit);
+  sort_pairs(PairArrays{keys.data(), values.data()}, keys.size(), low_bit, high_bit, &visit);
 }
 
 }  // namespace glint::accel

@@ -1,10 +1,13 @@
 #pragma once
-// Parallel LSD radix sort of (key, value) pairs, the sorting step of the Morton-code builders
-// (lbvh, trbvh, ploc). Own implementation on oneTBB: per pass, every fixed-size chunk counts its
+// Parallel radix sort of (key, value) pairs, the sorting step of the Morton-code builders (lbvh,
+// trbvh, ploc). Own implementation on oneTBB. A parallel pass: every fixed-size chunk counts its
 // 8-bit digits, one prefix sum over (digit, chunk) gives every chunk its output offsets, and the
-// chunks scatter in parallel. Chunks keep their input order, so the sort is stable and its output
-// does not depend on the number of threads.
+// chunks scatter in parallel. Short inputs take such passes from the lowest digit up (LSD); long
+// ones take one on their top digit, then every bucket is sorted by one thread in cache. Chunks keep
+// their input order, so the sort is stable and its output does not depend on the number of threads.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 
 namespace glint::accel {
@@ -20,5 +23,12 @@ void radix_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, uint
 // those bits keep their order.
 void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
                               uint32_t high_bit);
+
+// The same, calling visit(begin, end) on consecutive ranges that together cover the arrays, each
+// once it is sorted (from several threads at once), so that the caller can go on with a range while
+// it is still in cache. Pairs equal in bits [low_bit, high_bit) always share a range.
+using SortedRangeVisitor = std::function<void(size_t begin, size_t end)>;
+void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
+                              uint32_t high_bit, const SortedRangeVisitor& visit);
 
 }  // namespace glint::accel

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -120,15 +122,26 @@ std::vector<uint32_t> stable_order(std::span<const vec3> centroids, uint32_t bit
 TEST(Morton, SortEqualsAStableSortByTheChosenCode) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  // Spread points (30 bits suffice), then points packed into a few 30-bit cells so that runs of
-  // equal 30-bit codes have every length: short ones (insertion sort) and long ones (radix sort).
-  std::vector<vec3> spread(50000);
+  // Points packed into one 30-bit cell each run, with distinct 63-bit codes.
+  const auto add_runs = [&](std::vector<vec3>& points, std::initializer_list<int> runs) {
+    for (const int run : runs) {
+      const vec3 cell(unit(rng), unit(rng), unit(rng));
+      for (int i = 0; i < run; ++i) points.push_back(cell + vec3(unit(rng), unit(rng), unit(rng)) * 1e-4f);
+    }
+  };
+  // Spread points with a few runs, under 1 % of collisions: 30 bits win, and the runs, which the
+  // sort refines to 63 bits as it goes, must be put back in index order (both by insertion sort
+  // and, over 64, by a sort of their own). More than 65,536 points, so the radix sort goes bucket
+  // by bucket.
+  std::vector<vec3> spread(100000);
   for (vec3& p : spread) p = vec3(unit(rng), unit(rng), unit(rng));
+  add_runs(spread, {2, 2, 3, 5, 17, 64, 300});
+  std::shuffle(spread.begin(), spread.end(), rng);
+  // Clustered points, whose runs of equal 30-bit codes have every length: short ones (insertion
+  // sort) and long ones (radix sort), among spread ones.
   std::vector<vec3> clustered{vec3(0.0f), vec3(1.0f)};
-  for (const int run : {2, 3, 40, 64, 65, 300, 5000, 40000}) {
-    const vec3 cell(unit(rng), unit(rng), unit(rng));
-    for (int i = 0; i < run; ++i) clustered.push_back(cell + vec3(unit(rng), unit(rng), unit(rng)) * 1e-4f);
-  }
+  for (int i = 0; i < 30000; ++i) clustered.push_back(vec3(unit(rng), unit(rng), unit(rng)));
+  add_runs(clustered, {2, 3, 40, 64, 65, 300, 5000, 40000});
   std::shuffle(clustered.begin(), clustered.end(), rng);
   for (const auto& [centroids, bits] : {std::pair{spread, 30u}, std::pair{clustered, 63u}}) {
     const MortonOrder order = sort_by_morton(centroids);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <mutex>
 #include <numeric>
 #include <random>
 #include <utility>
@@ -90,6 +91,43 @@ TEST(RadixSort, SkewedKeysWithOneHugeBucketAndManyTinyOnes) {
   for (size_t i = 0; i < keys.size(); ++i) {
     ASSERT_EQ(keys[i], expected[i].first) << "at " << i;
     ASSERT_EQ(values[i], expected[i].second) << "at " << i;
+  }
+}
+
+TEST(RadixSort, VisitedRangesCoverTheArrayAreSortedWhenVisitedAndKeepEqualKeysTogether) {
+  for (const size_t count : {size_t{1000}, size_t{300000}}) {  // LSD passes; bucket by bucket
+    std::mt19937_64 rng(count);
+    std::vector<uint64_t> keys(count);
+    // Bits [33, 64) sort; a quarter of the keys share one top byte (a bucket sorted in parallel).
+    for (uint64_t& key : keys) key = (rng() % 4 == 0 ? uint64_t{0x5a} << 56 : rng() & (uint64_t{0xff} << 56)) | (rng() % 5000) << 33 | (rng() & 0xffff);
+    std::vector<uint32_t> values(count);
+    std::iota(values.begin(), values.end(), 0u);
+    std::mutex mutex;
+    std::vector<std::pair<size_t, size_t>> ranges;
+    bool sorted_when_visited = true;
+    radix_sort_pairs_by_bits(keys, values, 33, 64, [&](size_t begin, size_t end) {
+      const bool sorted = std::is_sorted(keys.begin() + begin, keys.begin() + end,
+                                         [](uint64_t a, uint64_t b) { return a >> 33 < b >> 33; });
+      const std::lock_guard lock(mutex);
+      sorted_when_visited = sorted_when_visited && sorted;
+      ranges.emplace_back(begin, end);
+    });
+    EXPECT_TRUE(sorted_when_visited) << count;
+    std::sort(ranges.begin(), ranges.end());
+    ASSERT_FALSE(ranges.empty());
+    EXPECT_EQ(ranges.front().first, 0u);
+    EXPECT_EQ(ranges.back().second, count);
+    for (size_t i = 0; i < ranges.size(); ++i) {
+      EXPECT_LT(ranges[i].first, ranges[i].second);
+      if (i > 0) {
+        EXPECT_EQ(ranges[i].first, ranges[i - 1].second);
+        EXPECT_NE(keys[ranges[i].first] >> 33, keys[ranges[i].first - 1] >> 33) << "equal keys straddle two ranges";
+      }
+    }
+    if (count > 100000) {
+      EXPECT_GT(ranges.size(), 1u);
+    }
+    EXPECT_TRUE(std::is_sorted(keys.begin(), keys.end(), [](uint64_t a, uint64_t b) { return a >> 33 < b >> 33; }));
   }
 }
 
