@@ -8,6 +8,7 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numeric>
@@ -55,6 +56,21 @@ UnitMapping unit_mapping(std::span<const vec3> centroids) {
 // (tests check it).
 constexpr uint32_t kCoarseShift = 33;
 
+// Every 7-bit value with two zero bits after each of its bits (spread_bits_21 of values below 128).
+struct SpreadBy3Table {
+  std::array<uint64_t, 128> entries{};
+  constexpr SpreadBy3Table() {
+    for (uint32_t v = 0; v < 128; ++v)
+      for (uint32_t bit = 0; bit < 7; ++bit) entries[v] |= uint64_t{(v >> bit) & 1u} << (3 * bit);
+  }
+};
+constexpr SpreadBy3Table kSpreadBy3;
+
+uint64_t spread_bits_21_by_table(uint32_t v) {
+  const auto& t = kSpreadBy3.entries;
+  return t[v & 127u] | t[(v >> 7) & 127u] << 21 | t[(v >> 14) & 127u] << 42;
+}
+
 // Codes of every centroid with 63 bits, and prims = 0, 1, 2, ... in parallel.
 MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mapping) {
   MortonOrder order;
@@ -62,7 +78,7 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
   order.prims.resize(centroids.size());  // written below, not zeroed (unzeroed_vector.h)
   tbb::parallel_for(tbb::blocked_range<size_t>(0, centroids.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) {
-      order.codes[i] = morton63(mapping(centroids[i]));
+      order.codes[i] = detail::morton63_by_table(mapping(centroids[i]));
       order.prims[i] = static_cast<uint32_t>(i);
     }
   });
@@ -144,6 +160,13 @@ void sort_coarse_runs(MortonOrder& order, SortRun&& sort_run) {
 }
 
 }  // namespace
+
+uint64_t detail::morton63_by_table(const vec3& unit) {
+  constexpr uint32_t cells = 1u << 21;
+  return spread_bits_21_by_table(detail::quantise_unit(unit.x, cells)) |
+         spread_bits_21_by_table(detail::quantise_unit(unit.y, cells)) << 1 |
+         spread_bits_21_by_table(detail::quantise_unit(unit.z, cells)) << 2;
+}
 
 MortonOrder sort_by_morton(std::span<const vec3> centroids) {
   // Both code lengths from one set of 63-bit codes, sorted by their top 30 bits (which are the

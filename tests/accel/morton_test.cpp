@@ -3,10 +3,9 @@
 
 #include <gtest/gtest.h>
 
-#include <initializer_list>
-
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <numeric>
 #include <random>
@@ -26,6 +25,21 @@ uint64_t interleave_slowly(uint32_t x, uint32_t y, uint32_t z, uint32_t bits) {
     code |= uint64_t{(z >> b) & 1u} << (3 * b + 2);
   }
   return code;
+}
+
+TEST(Morton, TheCpuTableVersionOfMorton63GivesTheSameBits) {
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<float> wide(-0.25f, 1.25f);  // clamping on both sides included
+  std::uniform_int_distribution<uint32_t> cell21(0, (1u << 21) - 1);
+  for (int i = 0; i < 200000; ++i) {
+    const vec3 p(wide(rng), wide(rng), wide(rng));
+    ASSERT_EQ(detail::morton63_by_table(p), morton63(p)) << p.x << " " << p.y << " " << p.z;
+    const vec3 cells(static_cast<float>(cell21(rng)), static_cast<float>(cell21(rng)), static_cast<float>(cell21(rng)));
+    const vec3 unit = (cells + 0.5f) / 2097152.0f;
+    ASSERT_EQ(detail::morton63_by_table(unit), morton63(unit));
+  }
+  for (const float edge : {0.0f, 1.0f, -0.0f, 0.5f, std::nextafter(1.0f, 0.0f), std::numeric_limits<float>::quiet_NaN()})
+    EXPECT_EQ(detail::morton63_by_table(vec3(edge)), morton63(vec3(edge))) << edge;
 }
 
 TEST(Morton, CodesInterleaveTheQuantisedCoordinates) {
