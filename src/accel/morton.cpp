@@ -179,7 +179,8 @@ MortonOrder sort_by_morton(std::span<const vec3> centroids) {
   std::atomic<size_t> collisions{0};
   const std::span<uint64_t> codes(order.codes);
   const std::span<uint32_t> prims(order.prims);
-  radix_sort_pairs_by_bits(codes, prims, kCoarseShift, 64, [&](size_t begin, size_t end) {
+  // Bits [33, 63): bit 63 of a 63-bit code is 0, and the sort's first pass should split on bits that vary.
+  radix_sort_pairs_by_bits(codes, prims, kCoarseShift, 63, [&](size_t begin, size_t end) {
     collisions.fetch_add(count_and_refine_runs(codes.subspan(begin, end - begin), prims.subspan(begin, end - begin)),
                          std::memory_order_relaxed);
   });

@@ -28,9 +28,10 @@ constexpr size_t kChunkSize = 4096;
 // every bucket on its own, in cache. Each of the LSD passes below would read and write the whole
 // array from memory instead (four passes for Morton codes).
 constexpr size_t kBucketSortMinCount = size_t{1} << 16;
-// A bucket up to this long is sorted by one thread in cache (12 bytes a pair, scratch included);
-// a longer one (a skewed distribution) by the parallel sort again.
-constexpr size_t kLocalSortMaxCount = size_t{1} << 16;
+// A bucket up to this long is sorted by one thread in cache (12 bytes a pair, and as much scratch:
+// 384 KiB, within a core's L2); a longer one bucket by bucket again, on its next 8 bits. A
+// bucket of 60k pairs sorted by one thread was the tail of the whole sort on 16 cores.
+constexpr size_t kLocalSortMaxCount = size_t{1} << 14;
 // Digits of the in-cache passes: 2048 counters fit in L1 and two passes cover 22 bits.
 constexpr uint32_t kLocalDigitBits = 11;
 constexpr uint32_t kMaxLocalPasses = (64 + kLocalDigitBits - 1) / kLocalDigitBits;
@@ -217,11 +218,17 @@ void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t h
       const PairArrays to{data.keys + begin, data.values + begin};
       if (size <= kLocalSortMaxCount) {
         sort_in_cache(from, to, size, low_bit, top_shift, scratch.local());
+        if (visit) (*visit)(begin, begin + size);
       } else {
-        sort_pairs(from, size, low_bit, top_shift, nullptr);
+        // Sorted in place where it belongs, so that its own buckets are visited as they finish,
+        // in parallel, rather than the whole of it by one thread at the end.
         copy_pairs(from, to, size);
+        const SortedRangeVisitor shifted = [&](size_t first, size_t last) { (*visit)(begin + first, begin + last); };
+        if (top_shift - low_bit > kDigitBits)
+          sort_by_buckets(to, size, low_bit, top_shift, visit ? &shifted : nullptr);
+        else
+          sort_pairs(to, size, low_bit, top_shift, visit ? &shifted : nullptr);
       }
-      if (visit) (*visit)(begin, begin + size);
     }
   });
 }
