@@ -89,33 +89,34 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
 // by primitive, std::sort) of their own.
 constexpr size_t kInsertionSortRun = 64;
 
-// Orders one run of equal 30-bit codes by the remaining 33 bits, stably (the run is in index order).
-void sort_run_by_fine_bits(std::span<uint64_t> codes, std::span<uint32_t> prims) {
-  if (codes.size() > kInsertionSortRun) {
-    radix_sort_pairs_by_bits(codes, prims, 0, kCoarseShift);
-    return;
-  }
+// Stable insertion sort of a short run of (code, prim) pairs by key(code, prim).
+template <typename Key>
+void insertion_sort_run(std::span<uint64_t> codes, std::span<uint32_t> prims, Key&& key) {
   for (size_t i = 1; i < codes.size(); ++i)
-    for (size_t j = i; j > 0 && codes[j - 1] > codes[j]; --j) {
+    for (size_t j = i; j > 0 && key(codes[j - 1], prims[j - 1]) > key(codes[j], prims[j]); --j) {
       std::swap(codes[j - 1], codes[j]);
       std::swap(prims[j - 1], prims[j]);
     }
 }
 
+// Orders one run of equal 30-bit codes by the remaining 33 bits, stably (the run is in index order).
+void sort_run_by_fine_bits(std::span<uint64_t> codes, std::span<uint32_t> prims) {
+  if (codes.size() > kInsertionSortRun)
+    radix_sort_pairs_by_bits(codes, prims, 0, kCoarseShift);
+  else
+    insertion_sort_run(codes, prims, [](uint64_t code, uint32_t) { return code; });
+}
+
 // Puts one run of equal 30-bit codes back in index order, the 30-bit stable order.
 void sort_run_by_prim(std::span<uint64_t> codes, std::span<uint32_t> prims) {
-  if (codes.size() > kInsertionSortRun) {
-    std::vector<std::pair<uint32_t, uint64_t>> pairs(codes.size());
-    for (size_t i = 0; i < codes.size(); ++i) pairs[i] = {prims[i], codes[i]};
-    std::sort(pairs.begin(), pairs.end());
-    for (size_t i = 0; i < codes.size(); ++i) std::tie(prims[i], codes[i]) = pairs[i];
+  if (codes.size() <= kInsertionSortRun) {
+    insertion_sort_run(codes, prims, [](uint64_t, uint32_t prim) { return prim; });
     return;
   }
-  for (size_t i = 1; i < codes.size(); ++i)
-    for (size_t j = i; j > 0 && prims[j - 1] > prims[j]; --j) {
-      std::swap(codes[j - 1], codes[j]);
-      std::swap(prims[j - 1], prims[j]);
-    }
+  std::vector<std::pair<uint32_t, uint64_t>> pairs(codes.size());
+  for (size_t i = 0; i < codes.size(); ++i) pairs[i] = {prims[i], codes[i]};
+  std::sort(pairs.begin(), pairs.end());
+  for (size_t i = 0; i < codes.size(); ++i) std::tie(prims[i], codes[i]) = pairs[i];
 }
 
 // For a range of the arrays sorted by the top 30 bits that holds whole runs of equal top bits:
