@@ -193,17 +193,19 @@ void sort_in_cache(PairArrays from, PairArrays to, size_t count, uint32_t low_bi
 // `visit` (may be null) gets ranges of `data`, as radix_sort_pairs_by_bits documents.
 void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit, const SortedRangeVisitor* visit);
 
-// One parallel pass on the top 8 bits into buffers, then every bucket sorted by the remaining bits
-// back into `data`: in cache by one thread, or, when long, by sort_pairs again.
-void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit,
+// One parallel pass on the top 8 bits from `source` into buffers, then every bucket sorted by the
+// remaining bits into `data` (which may be `source`): in cache by one thread, or, when long, bucket
+// by bucket again.
+void sort_by_buckets(PairArrays source, PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit,
                      const SortedRangeVisitor* visit) {
   const uint32_t top_shift = high_bit - kDigitBits;
   detail::ParallelArray<uint64_t> key_buffer(count, detail::kForOverwrite);
   detail::ParallelArray<uint32_t> value_buffer(count, detail::kForOverwrite);
   const PairArrays buckets{key_buffer.data(), value_buffer.data()};
   std::vector<Histogram> offsets;
-  const std::optional<Histogram> sizes = scatter_by_digit(data, buckets, count, top_shift, high_bit, offsets);
+  const std::optional<Histogram> sizes = scatter_by_digit(source, buckets, count, top_shift, high_bit, offsets);
   if (!sizes) {  // one bucket: the top bits are already in order
+    if (source.keys != data.keys) copy_pairs(source, data, count);
     sort_pairs(data, count, low_bit, top_shift, visit);
     return;
   }
@@ -220,14 +222,16 @@ void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t h
         sort_in_cache(from, to, size, low_bit, top_shift, scratch.local());
         if (visit) (*visit)(begin, begin + size);
       } else {
-        // Sorted in place where it belongs, so that its own buckets are visited as they finish,
-        // in parallel, rather than the whole of it by one thread at the end.
-        copy_pairs(from, to, size);
+        // Sorted into where it belongs, so that its own buckets are visited as they finish, in
+        // parallel, rather than the whole of it by one thread at the end.
         const SortedRangeVisitor shifted = [&](size_t first, size_t last) { (*visit)(begin + first, begin + last); };
-        if (top_shift - low_bit > kDigitBits)
-          sort_by_buckets(to, size, low_bit, top_shift, visit ? &shifted : nullptr);
-        else
-          sort_pairs(to, size, low_bit, top_shift, visit ? &shifted : nullptr);
+        const SortedRangeVisitor* shifted_visit = visit ? &shifted : nullptr;
+        if (top_shift - low_bit > kDigitBits) {
+          sort_by_buckets(from, to, size, low_bit, top_shift, shifted_visit);
+        } else {
+          copy_pairs(from, to, size);
+          sort_pairs(to, size, low_bit, top_shift, shifted_visit);
+        }
       }
     }
   });
@@ -236,7 +240,7 @@ void sort_by_buckets(PairArrays data, size_t count, uint32_t low_bit, uint32_t h
 // Stable sort of `count` pairs by bits [low_bit, high_bit) of their keys, in place.
 void sort_pairs(PairArrays data, size_t count, uint32_t low_bit, uint32_t high_bit, const SortedRangeVisitor* visit) {
   if (count >= kBucketSortMinCount && high_bit - low_bit > kDigitBits) {
-    sort_by_buckets(data, count, low_bit, high_bit, visit);
+    sort_by_buckets(data, data, count, low_bit, high_bit, visit);
     return;
   }
   if (count >= 2 && low_bit < high_bit) sort_by_lsd_passes(data, count, low_bit, high_bit);
