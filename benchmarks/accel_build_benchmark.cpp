@@ -1,8 +1,9 @@
 // CPU build time on the built-in `atrium` scene (618k triangles, every instance flattened to
 // world-space triangles as accel-bench does), and where it goes:
-//   LbvhPhases    the lbvh build step by step (triangle boxes, Morton codes and sort, the radix
-//                 tree with its boxes and collapse costs, flattening); one counter per step, ms per
-//                 build; `morton_bits` says whether 30-bit codes sufficed
+//   LbvhPhases    the lbvh build step by step (triangle boxes, Morton codes and sort, the sweep
+//                 that makes the radix tree, its collapse and its node pairs, the layout that
+//                 gathers them); one counter per step, ms per build; `morton_bits` says whether
+//                 30-bit codes sufficed
 //   Build/<name>  build_bvh(builder, mesh) whole, as `glint accel-bench` times it, repeated in one
 //                 process (warm: the allocator reuses memory that accel-bench's single builds fault in)
 //   Embree/<q>    Embree 3 at quality low / medium / high over the same triangles (construction alone,
@@ -16,6 +17,7 @@
 #include "accel/builder.h"
 #include "accel/bvh_collapse_leaves.h"
 #include "accel/embree_scene.h"
+#include "accel/lbvh_layout.h"
 #include "accel/morton.h"
 #include "accel/primitive_bounds.h"
 #include "rt/scene_geometry.h"
@@ -66,7 +68,7 @@ double ms_since(Clock::time_point& start) {
 void LbvhPhases(benchmark::State& state) {
   const TriangleMesh& mesh = fixture().mesh;
   const BuildOptions options;
-  double boxes_ms = 0, morton_ms = 0, tree_ms = 0, flatten_ms = 0;
+  double boxes_ms = 0, morton_ms = 0, tree_ms = 0, layout_ms = 0;
   uint32_t bits = 0;
   for (auto _ : state) {
     auto start = Clock::now();
@@ -76,10 +78,10 @@ void LbvhPhases(benchmark::State& state) {
     MortonOrder order = sort_by_morton(input.centroids);
     bits = order.bits;
     morton_ms += ms_since(start);
-    const detail::RadixTree tree = detail::build_radix_tree(input, order, options);
+    const detail::LbvhSweep sweep = detail::sweep_lbvh(input, order, options);
     tree_ms += ms_since(start);
-    Bvh bvh = detail::flatten_radix_tree(tree, std::move(order.prims), options, "lbvh");
-    flatten_ms += ms_since(start);
+    Bvh bvh = detail::lay_out_lbvh(sweep, std::move(order.prims), "lbvh");
+    layout_ms += ms_since(start);
     benchmark::DoNotOptimize(bvh.nodes.data());
   }
   const auto per_build = [&](double total) {
@@ -88,7 +90,7 @@ void LbvhPhases(benchmark::State& state) {
   state.counters["boxes_ms"] = per_build(boxes_ms);
   state.counters["morton_ms"] = per_build(morton_ms);
   state.counters["tree_ms"] = per_build(tree_ms);
-  state.counters["flatten_ms"] = per_build(flatten_ms);
+  state.counters["layout_ms"] = per_build(layout_ms);
   state.counters["morton_bits"] = bits;
 }
 BENCHMARK(LbvhPhases)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);

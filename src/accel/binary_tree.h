@@ -53,58 +53,42 @@ struct SubtreeSummary {
   bool collapse = false;   // becomes one leaf (always true for a single-primitive leaf)
 };
 
+inline double leaf_cost(const Aabb& box, const BuildOptions& options) {
+  return double{options.intersection_cost} * half_area(box);
+}
+
+// The collapse rule of SubtreeSummary for a node with half area `area` over `prims` primitives and
+// children of the given costs: the node's cost, and whether it becomes one leaf.
+struct CollapseChoice {
+  double cost;
+  bool collapse;
+};
+
+inline CollapseChoice choose_collapse(double area, uint32_t prims, double left_cost, double right_cost,
+                                      const BuildOptions& options) {
+  const double interior_cost = double{options.traversal_cost} * area + left_cost + right_cost;
+  if (prims <= options.max_leaf_size) {
+    const double collapsed_cost = double{options.intersection_cost} * area * prims;
+    if (collapsed_cost <= interior_cost) return {collapsed_cost, true};
+  }
+  return {interior_cost, false};
+}
+
 inline SubtreeSummary summarise_leaf(const Aabb& box, const BuildOptions& options) {
-  return {double{options.intersection_cost} * half_area(box), 1, 1, 1, true};
+  return {leaf_cost(box, options), 1, 1, 1, true};
 }
 
 inline SubtreeSummary summarise_interior(const Aabb& box, const SubtreeSummary& left, const SubtreeSummary& right,
                                          const BuildOptions& options) {
-  const double area = half_area(box);
   SubtreeSummary summary;
   summary.prims = left.prims + right.prims;
-  summary.cost = double{options.traversal_cost} * area + left.cost + right.cost;
-  if (summary.prims <= options.max_leaf_size) {
-    const double leaf_cost = double{options.intersection_cost} * area * summary.prims;
-    if (leaf_cost <= summary.cost) {
-      summary.cost = leaf_cost;
-      summary.collapse = true;
-      summary.out_nodes = 1;
-      summary.height = 1;
-      return summary;
-    }
-  }
-  summary.out_nodes = 1 + left.out_nodes + right.out_nodes;
-  summary.height = 1 + std::max(left.height, right.height);
+  const CollapseChoice choice = choose_collapse(half_area(box), summary.prims, left.cost, right.cost, options);
+  summary.cost = choice.cost;
+  summary.collapse = choice.collapse;
+  summary.out_nodes = choice.collapse ? 1 : 1 + left.out_nodes + right.out_nodes;
+  summary.height = choice.collapse ? 1 : 1 + std::max(left.height, right.height);
   return summary;
 }
-
-// The LBVH's radix tree without leaf nodes (build_lbvh.cpp). Leaf i is the i-th primitive in Morton
-// order, with its box at leaf_boxes[i]; ids below leaf_count are leaves, leaf_count + b is the
-// interior node whose split lies after key b, interiors[b]. Only what flattening reads is kept, in
-// arrays that no cache line straddles: a node's box and children (32 bytes) and the size of its
-// flattened subtree; the collapse costs and heights live only during the sweep, and a node's
-// primitive count is its key range. About 60 bytes a primitive, against 128 for a BinaryTree with
-// its summaries, whose fresh pages and cache misses were most of an LBVH build. Every subtree's
-// primitives are a contiguous slice of the Morton order, so that order is the flat Bvh's
-// prim_indices as it is. The leaf boxes are copied into that order once, by the sweep, so that
-// neither the sweep's parents nor flattening read the input's boxes at random.
-struct RadixInterior {
-  Aabb box;
-  uint32_t left = kNoNode;
-  uint32_t right = kNoNode;
-};
-static_assert(sizeof(RadixInterior) == 32);
-
-struct RadixTree {
-  ParallelArray<RadixInterior> interiors;  // leaf_count - 1 of them
-  // Per interior node, SubtreeSummary::out_nodes: 1 when its subtree becomes one leaf (an interior
-  // node kept as such has at least 3).
-  ParallelArray<uint32_t> out_nodes;
-  ParallelArray<Aabb> leaf_boxes;  // leaf_count of them, in Morton order
-  uint32_t leaf_count = 0;
-  uint32_t root = kNoNode;
-  uint32_t height = 0;  // levels of the flattened tree (SubtreeSummary::height of the root)
-};
 
 // Calls visit_leaf(leaf) for every leaf, then visit_interior(node) for every interior node once
 // both of its children were visited, in parallel. Each thread climbs from its leaf and stops at a

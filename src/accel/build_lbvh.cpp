@@ -1,6 +1,7 @@
 #include "accel/build_lbvh.h"
 
 #include "accel/bvh_collapse_leaves.h"
+#include "accel/lbvh_layout.h"
 #include "accel/radix_tree_sweep.h"
 
 #include <chrono>
@@ -78,70 +79,22 @@ BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order, 
 
 BinaryTree build_lbvh_tree(const BuildInput& input) { return build_karras_tree(input, sort_by_morton(input.centroids)); }
 
-RadixTree build_radix_tree(const BuildInput& input, const MortonOrder& order, const BuildOptions& options) {
-  RadixTree tree;
-  const auto count = static_cast<uint32_t>(order.prims.size());
-  tree.leaf_count = count;
-  if (count == 0) return tree;
-  // The sweep writes every element of these.
-  tree.interiors = ParallelArray<RadixInterior>(size_t{count} - 1, kForOverwrite);
-  tree.out_nodes = ParallelArray<uint32_t>(size_t{count} - 1, kForOverwrite);
-  tree.leaf_boxes = ParallelArray<Aabb>(count, kForOverwrite);
-  // What only the sweep needs of a node: its collapse cost and its height, which stays under 100
-  // (each level down lengthens the common prefix of keys of 64 + 32 bits).
-  ParallelArray<double> costs(size_t{count} - 1, kForOverwrite);
-  ParallelArray<uint8_t> heights(size_t{count} - 1, kForOverwrite);
-  // The SubtreeSummary of node `id` over keys [first, last], rebuilt from those arrays, so that the
-  // collapse rule is summarise_interior's, exactly as for a BinaryTree.
-  const auto summary_of = [&](uint32_t id, uint32_t first, uint32_t last) {
-    if (id < count) return summarise_leaf(tree.leaf_boxes[id], options);
-    const uint32_t b = id - count;
-    return SubtreeSummary{costs[b], last - first + 1, tree.out_nodes[b], heights[b], tree.out_nodes[b] == 1};
-  };
-  const auto box_of = [&](uint32_t id) -> const Aabb& {
-    return id < count ? tree.leaf_boxes[id] : tree.interiors[id - count].box;
-  };
-  tree.root = sweep_radix_tree(
-      order.codes,
-      [&](uint32_t leaf) {
-        prefetch_leaf_box(input, order.prims, leaf);
-        tree.leaf_boxes[leaf] = input.boxes[order.prims[leaf]];
-      },
-      [&](uint32_t child, uint32_t parent, bool is_left_child) {
-        RadixInterior& p = tree.interiors[parent - count];
-        (is_left_child ? p.left : p.right) = child;
-      },
-      [&](uint32_t node, uint32_t first, uint32_t last) {
-        const uint32_t split = node - count;
-        RadixInterior& n = tree.interiors[split];
-        n.box = box_of(n.left);
-        n.box.extend(box_of(n.right));
-        const SubtreeSummary summary = summarise_interior(n.box, summary_of(n.left, first, split),
-                                                          summary_of(n.right, split + 1, last), options);
-        costs[split] = summary.cost;
-        tree.out_nodes[split] = summary.out_nodes;
-        heights[split] = static_cast<uint8_t>(summary.height);
-      });
-  tree.height = tree.root < count ? 1 : heights[tree.root - count];
-  return tree;
-}
-
 }  // namespace detail
 
 Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "lbvh");
   MortonOrder order = sort_by_morton(input.centroids);
-  const detail::RadixTree tree = detail::build_radix_tree(input, order, options);
+  const detail::LbvhSweep sweep = detail::sweep_lbvh(input, order, options);
   Bvh bvh;
-  if (tree.height > kMaxBvhDepth) {
+  if (sweep.height > kMaxBvhDepth) {
     // Deeper than traversal allows (rare: 63-bit codes and the index tie-break allow about 95
     // levels): the BinaryTree path can rebalance.
     detail::ParallelArray<detail::SubtreeSummary> summaries;
     detail::BinaryTree binary = detail::build_karras_tree(input, order, options, summaries);
     bvh = detail::flatten_tree(binary, std::move(summaries), options, "lbvh");
   } else {
-    bvh = detail::flatten_radix_tree(tree, std::move(order.prims), options, "lbvh");
+    bvh = detail::lay_out_lbvh(sweep, std::move(order.prims), "lbvh");
   }
   bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;

@@ -31,9 +31,5 @@ BinaryTree build_karras_tree(const BuildInput& input, const MortonOrder& order, 
 // Morton sort plus build_karras_tree: the unflattened LBVH, which trbvh restructures.
 BinaryTree build_lbvh_tree(const BuildInput& input);
 
-// build_lbvh's radix tree: the same tree without leaf nodes (binary_tree.h), with each interior
-// node's SubtreeSummary for `options` from the same sweep; flatten_radix_tree makes it a Bvh.
-RadixTree build_radix_tree(const BuildInput& input, const MortonOrder& order, const BuildOptions& options);
-
 }  // namespace detail
 }  // namespace glint::accel

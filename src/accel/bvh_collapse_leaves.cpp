@@ -79,102 +79,57 @@ void limit_depth(Rebalancer& rebalancer, std::span<const SubtreeSummary> summari
   }
 }
 
-// What the Flattener reads of one node: its box, whether it becomes a leaf, and otherwise its
-// children and the size of the left one (primitives and flattened nodes).
-struct FlatteningNode {
-  Aabb box;
-  bool collapse = true;
-  uint32_t left = kNoNode;
-  uint32_t right = kNoNode;
-  uint32_t left_prims = 0;
-  uint32_t left_out_nodes = 0;
-};
-
-// A BinaryTree with its summaries. A collapsed subtree's primitives are gathered from its leaves.
-struct BinaryTreeNodes {
+// Writes a BinaryTree with its summaries into a Bvh, collapsed subtrees as leaves.
+struct Flattener {
   const BinaryTree& tree;
   std::span<const SubtreeSummary> summaries;
-
-  FlatteningNode node(uint32_t id, uint32_t /*first_prim*/) const {
-    const TreeNode& n = tree.nodes[id];
-    if (summaries[id].collapse) return {n.box};
-    const SubtreeSummary& left = summaries[n.left];
-    return {n.box, false, n.left, n.right, left.prims, left.out_nodes};
-  }
+  Bvh& bvh;
+  uint32_t parallel_threshold;
 
   // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
   // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
   // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
-  uint32_t gather_prims(uint32_t id, uint32_t slot, Bvh& bvh) const {
+  uint32_t gather_prims(uint32_t id, uint32_t slot) const {
     const TreeNode& n = tree.nodes[id];
     if (n.is_leaf()) {
       bvh.prim_indices[slot] = n.prim;
       return slot + 1;
     }
-    return gather_prims(n.right, gather_prims(n.left, slot, bvh), bvh);
+    return gather_prims(n.right, gather_prims(n.left, slot));
   }
-};
 
-// A RadixTree: leaves are implicit, a left child's primitives are the keys up to its parent's
-// split, and prim_indices already hold the Morton order, which is every subtree's primitives left
-// to right, so there is nothing to gather.
-struct RadixTreeNodes {
-  const RadixTree& tree;
-
-  FlatteningNode node(uint32_t id, uint32_t first_prim) const {
-    if (id < tree.leaf_count) return {tree.leaf_boxes[id]};
-    const uint32_t split = id - tree.leaf_count;
-    const RadixInterior& n = tree.interiors[split];
-    if (tree.out_nodes[split] == 1) return {n.box};
-    const uint32_t left_out_nodes = n.left < tree.leaf_count ? 1 : tree.out_nodes[n.left - tree.leaf_count];
-    return {n.box, false, n.left, n.right, split - first_prim + 1, left_out_nodes};
-  }
-  void gather_prims(uint32_t, uint32_t, Bvh&) const {}
-};
-
-template <typename Nodes>
-struct Flattener {
-  const Nodes& nodes;
-  Bvh& bvh;
-  uint32_t parallel_threshold;
-
-  // Writes `node`, over `prims` primitives from first_prim, at bvh.nodes[out]; its descendants (if
-  // it stays interior) fill [descendants, descendants + out_nodes - 1): first its two children,
-  // then the left child's descendants, then the right child's, which is the order
+  // Writes `node`, whose primitives go to prim_indices from first_prim, at bvh.nodes[out]; its
+  // descendants (if it stays interior) fill [descendants, descendants + out_nodes - 1): first its
+  // two children, then the left child's descendants, then the right child's, which is the order
   // top_down_builder produces.
-  void emit(uint32_t node, uint32_t out, uint32_t descendants, uint32_t first_prim, uint32_t prims) const {
-    const FlatteningNode n = nodes.node(node, first_prim);
+  void emit(uint32_t node, uint32_t out, uint32_t descendants, uint32_t first_prim) const {
+    const TreeNode& n = tree.nodes[node];
+    const SubtreeSummary& summary = summaries[node];
     BvhNode& flat = bvh.nodes[out];
     flat.set_bounds(n.box);
-    if (n.collapse) {
+    if (summary.collapse) {
       flat.first = first_prim;
-      flat.prim_count = prims;
-      nodes.gather_prims(node, first_prim, bvh);
+      flat.prim_count = summary.prims;
+      gather_prims(node, first_prim);
       return;
     }
     flat.first = descendants;
     flat.prim_count = 0;
+    const SubtreeSummary& left = summaries[n.left];
     const uint32_t left_descendants = descendants + 2;
-    const uint32_t right_descendants = left_descendants + n.left_out_nodes - 1;
-    const uint32_t right_first_prim = first_prim + n.left_prims;
-    const uint32_t right_prims = prims - n.left_prims;
-    if (prims >= parallel_threshold) {
+    const uint32_t right_descendants = left_descendants + left.out_nodes - 1;
+    const uint32_t right_first_prim = first_prim + left.prims;
+    if (summary.prims >= parallel_threshold) {
       tbb::task_group group;
-      group.run([&] { emit(n.left, descendants, left_descendants, first_prim, n.left_prims); });
-      emit(n.right, descendants + 1, right_descendants, right_first_prim, right_prims);
+      group.run([&] { emit(n.left, descendants, left_descendants, first_prim); });
+      emit(n.right, descendants + 1, right_descendants, right_first_prim);
       group.wait();
     } else {
-      emit(n.left, descendants, left_descendants, first_prim, n.left_prims);
-      emit(n.right, descendants + 1, right_descendants, right_first_prim, right_prims);
+      emit(n.left, descendants, left_descendants, first_prim);
+      emit(n.right, descendants + 1, right_descendants, right_first_prim);
     }
   }
 };
-
-template <typename Nodes>
-void flatten_from(const Nodes& nodes, uint32_t root, uint32_t prims, Bvh& bvh, const BuildOptions& options) {
-  const Flattener<Nodes> flattener{nodes, bvh, std::max(options.parallel_threshold, 2u)};
-  flattener.emit(root, 0, 1, 0, prims);
-}
 
 }  // namespace
 
@@ -201,21 +156,8 @@ Bvh flatten_tree(BinaryTree& tree, ParallelArray<SubtreeSummary> summaries, cons
   bvh.nodes.resize(root.out_nodes);
   bvh.prim_indices.resize(tree.leaf_count);
   bvh.depth = root.height;
-  flatten_from(BinaryTreeNodes{tree, summaries}, tree.root, tree.leaf_count, bvh, options);
-  return bvh;
-}
-
-Bvh flatten_radix_tree(const RadixTree& tree, UnzeroedVector<uint32_t> prims, const BuildOptions& options,
-                       const std::string& builder) {
-  Bvh bvh;
-  bvh.builder = builder;
-  if (tree.leaf_count == 0) return bvh;
-  if (tree.height > kMaxBvhDepth)
-    fail("accel: build_{}: the radix tree is {} levels deep, more than {}", builder, tree.height, kMaxBvhDepth);
-  bvh.nodes.resize(tree.root < tree.leaf_count ? 1 : tree.out_nodes[tree.root - tree.leaf_count]);
-  bvh.depth = tree.height;
-  flatten_from(RadixTreeNodes{tree}, tree.root, tree.leaf_count, bvh, options);
-  bvh.prim_indices = std::move(prims);
+  const Flattener flattener{tree, summaries, bvh, std::max(options.parallel_threshold, 2u)};
+  flattener.emit(tree.root, 0, 1, 0);
   return bvh;
 }
 

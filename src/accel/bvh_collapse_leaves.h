@@ -27,10 +27,4 @@ Bvh flatten_tree(BinaryTree& tree, const BuildOptions& options, const std::strin
 Bvh flatten_tree(BinaryTree& tree, ParallelArray<SubtreeSummary> summaries, const BuildOptions& options,
                  const std::string& builder);
 
-// The same for the LBVH's leafless radix tree; `prims` is its Morton order (leaf i is prims[i]),
-// which becomes the Bvh's prim_indices. No rebalancing: the caller falls back to a BinaryTree where
-// the root's height exceeds kMaxBvhDepth (glint::Error if it does not).
-Bvh flatten_radix_tree(const RadixTree& tree, UnzeroedVector<uint32_t> prims, const BuildOptions& options,
-                       const std::string& builder);
-
 }  // namespace glint::accel::detail

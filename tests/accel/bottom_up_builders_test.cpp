@@ -10,6 +10,7 @@
 #include "accel/bvh_validate.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
+#include "same_tree_check.h"
 #include "test_scenes.h"
 #include "thread_count_check.h"
 
@@ -164,65 +165,6 @@ TEST(LeafCollapse, BvhSahEqualsTheTreeCostAndNeverExceedsNoCollapsing) {
   EXPECT_GT(stats.mean_leaf_size, 2.0);
 }
 
-// The flat Bvh of the BinaryTree path (build_karras_tree, then flatten_tree), which lbvh's leafless
-// RadixTree must reproduce exactly.
-Bvh binary_tree_lbvh(const BuildInput& input, const BuildOptions& options) {
-  detail::ParallelArray<detail::SubtreeSummary> summaries;
-  BinaryTree tree = detail::build_karras_tree(input, sort_by_morton(input.centroids), options, summaries);
-  return detail::flatten_tree(tree, std::move(summaries), options, "lbvh");
-}
-
-TEST(LbvhRadixTree, FlattensExactlyLikeTheBinaryTree) {
-  const testing::TestMesh scenes[] = {testing::make_clustered(46, 20000), testing::make_degenerate_soup(47, 8000),
-                                      testing::make_random_soup(48, 3)};
-  for (const testing::TestMesh& scene : scenes) {
-    const PrimitiveBounds bounds = triangle_bounds(scene.view());
-    for (const uint32_t leaf_size : {1u, 4u, 8u}) {
-      BuildOptions options;
-      options.max_leaf_size = leaf_size;
-      options.parallel_threshold = 64;  // many parallel tasks, which must not change the layout
-      const Bvh leafless = build_lbvh(bounds.input(), options);
-      const Bvh binary = binary_tree_lbvh(bounds.input(), options);
-      const auto where = [&] { return std::to_string(scene.triangle_count()) + " triangles, leaf size " + std::to_string(leaf_size); };
-      ASSERT_EQ(leafless.nodes.size(), binary.nodes.size()) << where();
-      EXPECT_EQ(0, std::memcmp(leafless.nodes.data(), binary.nodes.data(), binary.nodes.size() * sizeof(BvhNode)))
-          << where();
-      EXPECT_TRUE(std::equal(leafless.prim_indices.begin(), leafless.prim_indices.end(), binary.prim_indices.begin(),
-                             binary.prim_indices.end()))
-          << where();
-      EXPECT_EQ(leafless.depth, binary.depth) << where();
-    }
-  }
-}
-
-TEST(DepthLimit, AMortonChainDeeperThanTheLimitIsRebalanced) {
-  // Centroids whose 63-bit codes are 0 (eight times), 1, 2, 4, ..., 2^62 and all ones: code bit
-  // 3j + axis is cell 2^j on that axis of the unit cube, which the corner (1, 1, 1) spans. Their
-  // radix tree is a chain of 63 levels over the balanced subtree of the eight zeros: 67 levels.
-  PrimitiveBounds bounds;
-  const auto add = [&](const vec3& centroid) {
-    bounds.centroids.push_back(centroid);
-    bounds.boxes.push_back(Aabb{centroid, centroid});
-  };
-  for (int copy = 0; copy < 8; ++copy) add(vec3(0.0f));
-  for (int bit = 0; bit < 63; ++bit) {
-    vec3 centroid(0.0f);
-    centroid[bit % 3] = std::ldexp(1.0f, bit / 3 - 21);
-    add(centroid);
-  }
-  add(vec3(1.0f));
-  BuildOptions options;
-  options.max_leaf_size = 1;
-  const MortonOrder order = sort_by_morton(bounds.centroids);
-  ASSERT_EQ(order.bits, 63u);
-  const detail::RadixTree tree = detail::build_radix_tree(bounds.input(), order, options);
-  ASSERT_GT(tree.height, kMaxBvhDepth);
-  EXPECT_THROW(detail::flatten_radix_tree(tree, UnzeroedVector<uint32_t>(order.prims), options, "lbvh"), Error);
-  const Bvh bvh = build_lbvh(bounds.input(), options);
-  EXPECT_NO_THROW(validate_bvh(bvh, bounds.boxes, 1));
-  EXPECT_LE(bvh.depth, kMaxBvhDepth);
-}
-
 TEST(DepthLimit, ACaterpillarTreeIsRebalancedWithinTheTraversalLimit) {
   // 300 leaves hanging off one spine: depth 300 as built, far beyond kMaxBvhDepth.
   const uint32_t count = 300;
@@ -300,9 +242,8 @@ TEST(TreeletRestructuring, ZeroRoundsIsTheLbvh) {
   const Bvh trbvh = build_trbvh(bounds.input(), options);
   const Bvh lbvh = build_lbvh(bounds.input(), options);
   EXPECT_EQ(trbvh.builder, "trbvh");
-  ASSERT_EQ(trbvh.nodes.size(), lbvh.nodes.size());
-  EXPECT_EQ(0, std::memcmp(trbvh.nodes.data(), lbvh.nodes.data(), lbvh.nodes.size() * sizeof(BvhNode)));
-  EXPECT_EQ(trbvh.prim_indices, lbvh.prim_indices);
+  // The same tree; the layouts differ (lbvh lays its nodes out in the same pass, lbvh_layout.h).
+  testing::expect_same_tree(lbvh, trbvh, "trbvh of 0 rounds");
   options.treelet_rounds = 3;
   EXPECT_LT(compute_stats(build_trbvh(bounds.input(), options)).sah_cost, compute_stats(lbvh).sah_cost);
 }
