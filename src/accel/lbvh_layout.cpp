@@ -4,9 +4,11 @@
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <span>
 
 namespace glint::accel::detail {
@@ -124,12 +126,18 @@ class SubtreeStack {
   std::vector<LbvhSubtree> stack_;
 };
 
-// Chunk c's subtrees left for the border pass, in key order, after sweeping its keys.
+// Chunk c's subtrees left for the border pass, in key order, after sweeping its keys. Its pairs are
+// written into `local` (one per thread, twice the chunk's keys: as many as it could need, and small
+// enough to stay in cache), then copied to the next free place in sweep.pairs: the shared array is
+// then filled from the start, and its pages past what the pairs need are never touched.
 std::vector<LbvhSubtree> sweep_chunk(const BuildInput& input, const MortonOrder& order, const BuildOptions& options,
-                                     uint32_t c, LbvhSweep& sweep) {
+                                     uint32_t c, std::vector<BvhNode>& local, std::atomic<uint32_t>& stored,
+                                     LbvhSweep& sweep) {
   const uint32_t begin = c * sweep.chunk_keys;
   const uint32_t end = std::min(sweep.key_count, begin + sweep.chunk_keys);
-  PairOutput output{sweep.pairs.data(), 2 * end, 0};
+  local.resize(2 * size_t{sweep.chunk_keys});
+  const uint32_t local_end = 2 * (end - begin);
+  PairOutput output{local.data(), local_end, 2 * begin};  // ids as if the region were [2 begin, 2 end)
   std::vector<LbvhSubtree> border;
   SubtreeStack stack(order.codes, options, output, &border);
   LbvhSubtree subtree;
@@ -143,6 +151,8 @@ std::vector<LbvhSubtree> sweep_chunk(const BuildInput& input, const MortonOrder&
   LbvhChunk& chunk = sweep.chunks[c];
   chunk.region_end = 2 * end;
   chunk.pair_count = output.count;
+  chunk.stored_at = stored.fetch_add(2 * output.count, std::memory_order_relaxed);
+  std::copy(local.begin() + (local_end - 2 * output.count), local.begin() + local_end, sweep.pairs.begin() + chunk.stored_at);
   chunk.begins.resize(border.size());
   for (size_t i = 0; i < border.size(); ++i) chunk.begins[i] = border[i].pairs_begin;
   return border;
@@ -167,8 +177,11 @@ LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const Bu
   sweep.pairs = ParallelArray<BvhNode>(2 * size_t{sweep.key_count}, kForOverwrite);  // written before read
   sweep.chunks.resize(chunk_count);
   std::vector<std::vector<LbvhSubtree>> borders(chunk_count);
+  tbb::enumerable_thread_specific<std::vector<BvhNode>> local_pairs;
+  std::atomic<uint32_t> stored{0};
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, chunk_count, 1), [&](const tbb::blocked_range<uint32_t>& r) {
-    for (uint32_t c = r.begin(); c != r.end(); ++c) borders[c] = sweep_chunk(input, order, options, c, sweep);
+    for (uint32_t c = r.begin(); c != r.end(); ++c)
+      borders[c] = sweep_chunk(input, order, options, c, local_pairs.local(), stored, sweep);
   });
 
   // The border pass: every chunk's leftovers, in key order, through the same machine.
@@ -236,8 +249,9 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
         const uint32_t from = chunk.region_end - 2 * end, to = chunk.region_end - 2 * chunk.begins[i];
         const int64_t shift = runs[c][i].shift;
         // A run's interior nodes link only to pairs of the same run.
+        const BvhNode* stored = &sweep.pairs[chunk.stored_at] - (chunk.region_end - 2 * chunk.pair_count);
         for (uint32_t id = from; id != to; ++id) {
-          BvhNode node = sweep.pairs[id];
+          BvhNode node = stored[id];
           if (!node.is_leaf()) node.first = static_cast<uint32_t>(node.first + shift);
           bvh.nodes[static_cast<uint32_t>(id + shift)] = node;
         }

@@ -47,12 +47,15 @@ struct LbvhSubtree {
   bool collapse = true;      // one leaf over its keys (a single key always is)
 };
 
-// What the sweep wrote into one chunk's region: pairs numbered 0, 1, ... in the order written, pair
-// k at region_end - 2 (k + 1). Every subtree the chunk left to the border pass owns a consecutive
-// run of them, [begins[i], begins[i + 1]) (the last run ends at pair_count).
+// What the sweep wrote for one chunk: pairs numbered 0, 1, ... in the order written, pair k known
+// by the id region_end - 2 (k + 1) (chunk c's ids lie in [2 c chunk_keys, region_end), as if it had
+// written into a region of its own). They are stored in id order at LbvhSweep::pairs[stored_at, +2
+// pair_count). Every subtree the chunk left to the border pass owns a consecutive run of them,
+// [begins[i], begins[i + 1]) (the last run ends at pair_count).
 struct LbvhChunk {
   uint32_t region_end = 0;
   uint32_t pair_count = 0;
+  uint32_t stored_at = 0;
   std::vector<uint32_t> begins;  // per border subtree, in key order
 };
 
@@ -60,9 +63,9 @@ struct LbvhChunk {
 struct LbvhSweep {
   uint32_t key_count = 0;
   uint32_t chunk_keys = kLbvhChunkKeys;
-  // Pairs of flat nodes (children's `first` still in this numbering): chunk c's region is
-  // [2 c chunk_keys, 2 min(key_count, (c + 1) chunk_keys)); the border pass's pairs follow in
-  // top_pairs, numbered from 2 key_count.
+  // Pairs of flat nodes (interior nodes' `first` still an id), every chunk's in one block, the
+  // blocks in the order the chunks finished; the border pass's pairs are in top_pairs, their ids
+  // from 2 key_count on.
   ParallelArray<BvhNode> pairs;
   std::vector<LbvhChunk> chunks;
   std::vector<BvhNode> top_pairs;
