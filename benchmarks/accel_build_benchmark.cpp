@@ -5,9 +5,11 @@
 //                 gathers them); one counter per step, ms per build; `morton_bits` says whether
 //                 30-bit codes sufficed
 //   Build/<name>  build_bvh(builder, mesh) whole, as `glint accel-bench` times it, repeated in one
-//                 process (warm: the allocator reuses memory that accel-bench's single builds fault in)
-//   Embree/<q>    Embree 3 at quality low / medium / high over the same triangles (construction alone,
-//                 like Build)
+//                 process (warm: each build reuses the large blocks the last one freed, where
+//                 accel-bench's first build faults them in)
+//   Embree/<q>    Embree 3 at quality low / medium / high over the same triangles (a new scene each
+//                 time, construction alone, like Build); Embree/low-rebuild rebuilds one scene
+//                 (update_vertices), which keeps Embree's own memory between builds
 // GLINT_BENCH_THREADS limits TBB's workers (default: every hardware thread).
 //
 //   ./build/benchmarks/glint_benchmarks --benchmark_filter='LbvhPhases|Build/|Embree/'
@@ -127,6 +129,24 @@ void Embree(benchmark::State& state, EmbreeQuality quality) {
                                                   benchmark::Counter::kIsRate);
 }
 BENCHMARK_CAPTURE(Embree, low, EmbreeQuality::low)->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(1.0);
+
+// Embree low rebuilding one scene again and again (new vertex positions, the same here, then a
+// commit), as a per-frame rebuild would: the counterpart of Build's repeated builds, which reuse
+// the memory the last one freed (parallel_array.h).
+void EmbreeRebuild(benchmark::State& state) {
+  const TriangleMesh& mesh = fixture().mesh;
+  const EmbreeDevice device;
+  EmbreeScene scene(device, mesh, EmbreeQuality::low);
+  const std::span<const vec3> positions(mesh.positions, mesh.vertex_count);
+  for (auto _ : state) {
+    scene.update_vertices(positions);
+    state.SetIterationTime(scene.update_ms() * 1e-3);
+  }
+  state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(mesh.triangle_count) * 1e-6 *
+                                                      static_cast<double>(state.iterations()),
+                                                  benchmark::Counter::kIsRate);
+}
+BENCHMARK(EmbreeRebuild)->Name("Embree/low-rebuild")->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(1.0);
 BENCHMARK_CAPTURE(Embree, medium, EmbreeQuality::medium)->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(1.0);
 BENCHMARK_CAPTURE(Embree, high, EmbreeQuality::high)->Unit(benchmark::kMillisecond)->UseManualTime()->MinTime(1.0);
 

@@ -62,4 +62,6 @@ Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& 
   return bvh;
 }
 
+void release_build_memory() { detail::release_retained_blocks(); }
+
 }  // namespace glint::accel

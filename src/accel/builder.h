@@ -25,4 +25,9 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
 // clips the triangles themselves.
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options = {});
 
+// The builders keep the large blocks they and freed Bvhs released (up to 256 MiB, parallel_array.h)
+// for the next build, which then pays no page faults for them: a per-frame rebuild reuses the last
+// frame's memory. This gives those blocks back to the system, e.g. once a scene is loaded.
+void release_build_memory();
+
 }  // namespace glint::accel

@@ -89,14 +89,23 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
 // by primitive, std::sort) of their own.
 constexpr size_t kInsertionSortRun = 64;
 
-// Stable insertion sort of a short run of (code, prim) pairs by key(code, prim).
+// Stable insertion sort of a short run of (code, prim) pairs by key(code, prim). Each pair is held
+// while the larger ones move up, then written once: swapping neighbours instead re-read what the
+// previous step had just written, and stalled on store forwarding.
 template <typename Key>
 void insertion_sort_run(std::span<uint64_t> codes, std::span<uint32_t> prims, Key&& key) {
-  for (size_t i = 1; i < codes.size(); ++i)
-    for (size_t j = i; j > 0 && key(codes[j - 1], prims[j - 1]) > key(codes[j], prims[j]); --j) {
-      std::swap(codes[j - 1], codes[j]);
-      std::swap(prims[j - 1], prims[j]);
+  for (size_t i = 1; i < codes.size(); ++i) {
+    const uint64_t code = codes[i];
+    const uint32_t prim = prims[i];
+    const auto sort_key = key(code, prim);
+    size_t j = i;
+    for (; j > 0 && key(codes[j - 1], prims[j - 1]) > sort_key; --j) {
+      codes[j] = codes[j - 1];
+      prims[j] = prims[j - 1];
     }
+    codes[j] = code;
+    prims[j] = prim;
+  }
 }
 
 // Orders one run of equal 30-bit codes by the remaining 33 bits, stably (the run is in index order).

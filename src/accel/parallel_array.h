@@ -26,9 +26,19 @@ inline constexpr ForOverwrite kForOverwrite{};
 inline constexpr size_t kHugePageBytes = size_t{2} << 20;
 inline constexpr size_t kHugePageMinBytes = 2 * kHugePageBytes;
 
-// Raw storage of `bytes`, 2 MB aligned and marked for huge pages when large.
+// Raw storage of `bytes`, 2 MB aligned and marked for huge pages when large (alignment ==
+// kHugePageBytes). Large blocks are not given back to the system when freed but kept for the next
+// allocation they fit, up to kRetainedBlockBytes in all: a fresh block costs a page fault and the
+// kernel's zeroing per page, which on atrium were a quarter of a repeated lbvh build (a third on the
+// GPU machine's host). Embree keeps a dynamic scene's build arrays between builds for the same reason.
 std::byte* allocate_parallel_array(size_t bytes, size_t alignment);
-void free_parallel_array(std::byte* storage, size_t alignment);
+void free_parallel_array(std::byte* storage, size_t bytes, size_t alignment);
+
+inline constexpr size_t kRetainedBlockBytes = size_t{256} << 20;
+
+// The large blocks kept for reuse: how many bytes, and giving them all back to the system.
+size_t retained_block_bytes();
+void release_retained_blocks();
 
 template <typename T>
 class ParallelArray {
@@ -48,7 +58,7 @@ class ParallelArray {
   // then first touched by whoever writes them, usually a parallel loop.
   ParallelArray(size_t size, ForOverwrite)
       : size_(size), storage_(size == 0 ? nullptr : allocate_parallel_array(size * sizeof(T), alignment(size)),
-                              Free{alignment(size)}) {}
+                              Free{size * sizeof(T), alignment(size)}) {}
 
   ParallelArray(ParallelArray&& other) noexcept
       : size_(std::exchange(other.size_, 0)), storage_(std::move(other.storage_)) {}
@@ -71,8 +81,9 @@ class ParallelArray {
 
  private:
   struct Free {
+    size_t bytes = 0;
     size_t alignment = alignof(std::max_align_t);
-    void operator()(std::byte* storage) const { free_parallel_array(storage, alignment); }
+    void operator()(std::byte* storage) const { free_parallel_array(storage, bytes, alignment); }
   };
   static size_t alignment(size_t size) {
     const size_t bytes = size * sizeof(T);

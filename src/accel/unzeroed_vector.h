@@ -7,8 +7,8 @@
 //    thread that sizes it, which on 16 cores took a third of an LBVH build; here the builders' parallel
 //    tasks touch the pages first, as they write every element anyway. Every other way of adding
 //    elements (push_back, insert, copies, resize(n, value)) constructs them as usual.
-//  - Arrays of 4 MB and more are 2 MB aligned and ask for transparent huge pages, like the builders'
-//    scratch arrays (parallel_array.h).
+//  - Arrays of 4 MB and more are 2 MB aligned and ask for transparent huge pages, and their memory
+//    is kept for reuse when freed, like the builders' scratch arrays (parallel_array.h).
 // T must be trivially copyable and destructible (an implicit-lifetime type), so the allocation
 // itself creates the elements and leaving them unwritten is well defined; reading one before it is
 // written gives an unspecified value, so whoever calls resize(n) must write all n.
@@ -36,7 +36,9 @@ struct UnzeroedAllocator {
     if (n > static_cast<size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
     return reinterpret_cast<T*>(detail::allocate_parallel_array(n * sizeof(T), alignment(n)));
   }
-  void deallocate(T* p, size_t n) noexcept { detail::free_parallel_array(reinterpret_cast<std::byte*>(p), alignment(n)); }
+  void deallocate(T* p, size_t n) noexcept {
+    detail::free_parallel_array(reinterpret_cast<std::byte*>(p), n * sizeof(T), alignment(n));
+  }
 
   // Value-initialisation (resize(n), vector(n)) writes nothing; anything else constructs as usual.
   template <typename U>
