@@ -209,13 +209,15 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
   if (sweep.height > kMaxBvhDepth)
     fail("accel: build_{}: the radix tree is {} levels deep, more than {}", builder, sweep.height, kMaxBvhDepth);
   const uint32_t top_base = 2 * sweep.key_count;  // sweep ids from here on are the border pass's
-  const uint32_t top_first = static_cast<uint32_t>(sweep.top_pairs.size()) - 2 * sweep.top_pair_count;
 
-  // A chunk's run of pairs is kept when the border pass links to its subtree; it is not when a
-  // border subtree collapsed over it. Kept runs go after the border pass's pairs, in sweep order.
+  // The final order is depth-first, so that every subtree's descendants are one contiguous range
+  // (refit.cpp cuts the tree into such ranges): a walk of the border pass's tree places each of its
+  // pairs, then the left child's descendants, then the right child's; where it reaches a subtree a
+  // chunk made, that subtree's run of pairs goes, already in depth-first order (the right child's
+  // descendants first). A chunk's run is left out when a leaf of the border pass collapsed over it.
   struct Run {
     bool kept = false;
-    int64_t shift = 0;  // final index - sweep position
+    int64_t shift = 0;  // final index - id
   };
   std::vector<std::vector<Run>> runs(sweep.chunks.size());
   for (size_t c = 0; c < sweep.chunks.size(); ++c) runs[c].resize(sweep.chunks[c].begins.size());
@@ -223,20 +225,30 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
     const size_t c = id / (2 * sweep.chunk_keys);
     return runs[c][run_of(sweep.chunks[c], id)];
   };
-  const auto links_to_chunk = [&](const BvhNode& node) { return !node.is_leaf() && node.first < top_base; };
+  const auto top_pair = [&](uint32_t id) { return (static_cast<uint32_t>(sweep.top_pairs.size()) - (id - top_base)) / 2 - 1; };
+  std::vector<uint32_t> top_at(sweep.top_pair_count);  // final index of the border pass's pair k
   const BvhNode root = flat_node(sweep.root);
-  if (links_to_chunk(root)) run_at(root.first).kept = true;
-  for (uint32_t i = top_first; i < sweep.top_pairs.size(); ++i)
-    if (links_to_chunk(sweep.top_pairs[i])) run_at(sweep.top_pairs[i].first).kept = true;
-  uint32_t next = 1 + 2 * sweep.top_pair_count;
-  for (size_t c = 0; c < sweep.chunks.size(); ++c) {
-    const LbvhChunk& chunk = sweep.chunks[c];
-    for (size_t i = 0; i < chunk.begins.size(); ++i) {
-      const uint32_t end = i + 1 < chunk.begins.size() ? chunk.begins[i + 1] : chunk.pair_count;
-      if (!runs[c][i].kept) continue;
-      runs[c][i].shift = int64_t{next} - (int64_t{chunk.region_end} - 2 * int64_t{end});
-      next += 2 * (end - chunk.begins[i]);
+  uint32_t next = 1;
+  std::vector<BvhNode> walk{root};
+  while (!walk.empty()) {
+    const BvhNode node = walk.back();
+    walk.pop_back();
+    if (node.is_leaf()) continue;
+    if (node.first >= top_base) {
+      top_at[top_pair(node.first)] = next;
+      next += 2;
+      const BvhNode* pair = &sweep.top_pairs[node.first - top_base];
+      walk.push_back(pair[1]);
+      walk.push_back(pair[0]);
+      continue;
     }
+    const LbvhChunk& chunk = sweep.chunks[node.first / (2 * sweep.chunk_keys)];
+    const size_t i = run_of(chunk, node.first);
+    const uint32_t end = i + 1 < chunk.begins.size() ? chunk.begins[i + 1] : chunk.pair_count;
+    Run& run = run_at(node.first);
+    run.kept = true;
+    run.shift = int64_t{next} - (int64_t{chunk.region_end} - 2 * int64_t{end});
+    next += 2 * (end - chunk.begins[i]);
   }
 
   bvh.nodes.resize(next);  // every node written below (unzeroed_vector.h)
@@ -260,12 +272,16 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
   });
   const auto rebased = [&](BvhNode node) {
     if (node.is_leaf()) return node;
-    node.first = node.first >= top_base ? 1 + (node.first - top_base - top_first)
+    node.first = node.first >= top_base ? top_at[top_pair(node.first)]
                                         : static_cast<uint32_t>(node.first + run_at(node.first).shift);
     return node;
   };
   bvh.nodes[0] = rebased(root);
-  for (uint32_t i = top_first; i < sweep.top_pairs.size(); ++i) bvh.nodes[1 + i - top_first] = rebased(sweep.top_pairs[i]);
+  for (uint32_t k = 0; k < sweep.top_pair_count; ++k) {
+    const BvhNode* pair = &sweep.top_pairs[sweep.top_pairs.size() - 2 * (k + 1)];
+    bvh.nodes[top_at[k]] = rebased(pair[0]);
+    bvh.nodes[top_at[k] + 1] = rebased(pair[1]);
+  }
   bvh.prim_indices = std::move(prims);
   bvh.depth = sweep.height;
   return bvh;

@@ -14,9 +14,10 @@
 namespace glint::accel {
 namespace {
 
-// Every builder lays nodes out depth-first with sibling pairs (a node's two children, then the left
-// child's descendants, then the right child's), so a subtree's descendants are one contiguous range
-// of the array. The refit cuts the tree into such subtrees near the root, sweeps each one's range in
+// Every builder lays nodes out depth-first with sibling pairs (a node's two children, then one
+// child's descendants, then the other's: the left child's first, except lbvh, which puts the
+// right child's first, lbvh_layout.h), so a subtree's descendants are one contiguous range of the
+// array. The refit cuts the tree into such subtrees near the root, sweeps each one's range in
 // reverse (children before parents, in memory order) as a parallel task, then finishes the few
 // nodes above the cut serially. A tree in another order (children after parents is all refit
 // promises its callers) gets one serial reverse sweep instead.
@@ -39,11 +40,16 @@ bool cut_tree(std::span<const BvhNode> nodes, size_t limit, std::vector<uint32_t
     }
     const uint32_t left = node.left(), right = node.right();
     if (left != subtree.begin || right + 1 > subtree.end) return false;
-    const uint32_t right_begin = nodes[right].is_leaf() ? subtree.end : nodes[right].first;
-    if (right_begin < right + 1 || right_begin > subtree.end) return false;
+    // After the pair come the descendants of one child, then the other's (a leaf has none): the
+    // right child's first when they start before the left child's.
+    const bool right_first = !nodes[right].is_leaf() && (nodes[left].is_leaf() || nodes[right].first < nodes[left].first);
+    const uint32_t first_child = right_first ? right : left, second_child = right_first ? left : right;
+    if (!nodes[first_child].is_leaf() && nodes[first_child].first != right + 1) return false;
+    const uint32_t second_begin = nodes[second_child].is_leaf() ? subtree.end : nodes[second_child].first;
+    if (second_begin < right + 1 || second_begin > subtree.end) return false;
     top.push_back(subtree.root);
-    queue.push_back({left, right + 1, right_begin});
-    queue.push_back({right, right_begin, subtree.end});
+    queue.push_back({first_child, right + 1, second_begin});
+    queue.push_back({second_child, second_begin, subtree.end});
   }
   return true;
 }
@@ -99,6 +105,16 @@ void refit_nodes(Bvh& bvh, const LeafBox& leaf_box) {
   }
   for (size_t i = top.size(); i-- > 0;) refitter.refit_node(top[i]);
 }
+
+}  // namespace
+
+bool detail::refits_in_parallel(const Bvh& bvh) {
+  std::vector<uint32_t> top;
+  std::vector<Subtree> subtrees;
+  return bvh.nodes.empty() || cut_tree(bvh.nodes, 1, top, subtrees);
+}
+
+namespace {
 
 void check_refittable(const Bvh& bvh, size_t prim_count) {
   if (!bvh.refittable)

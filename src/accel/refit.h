@@ -15,4 +15,10 @@ void refit(Bvh& bvh, std::span<const Aabb> prim_boxes);
 // Same, reading the moved triangles (same index buffer, new positions).
 void refit(Bvh& bvh, const TriangleMesh& mesh);
 
+namespace detail {
+// Whether refit can cut `bvh` into subtrees whose descendants are contiguous ranges and refit them in
+// parallel (every builder's layout; otherwise one serial sweep).
+bool refits_in_parallel(const Bvh& bvh);
+}  // namespace detail
+
 }  // namespace glint::accel

@@ -79,6 +79,35 @@ TEST(Refit, KeepsTopologyAndUpdatesOnlyBoxes) {
   EXPECT_GT(bvh.bounds().extent().z, 0.0f);  // the flat grid now has thickness
 }
 
+TEST(Refit, EveryBuildersLayoutIsRefittedInParallel) {
+  // Subtrees with contiguous descendants, whichever child's come first (lbvh puts the right one's
+  // first); a tree in neither order falls back to one serial sweep.
+  const testing::TestMesh scene = testing::make_clustered(47, 20000);
+  for (const BvhBuilder builder : kAllBvhBuilders) {
+    if (builder == BvhBuilder::none || builder == BvhBuilder::sbvh) continue;
+    const Bvh bvh = build_bvh(builder, scene.view());
+    EXPECT_TRUE(detail::refits_in_parallel(bvh)) << builder_name(builder);
+  }
+  // Children after parents, but the left child's descendants (3, 4, 7, 8) around the right
+  // child's (5, 6): refitted by one serial sweep, to the same boxes.
+  Bvh interleaved;
+  const auto interior = [](uint32_t first) { BvhNode n; n.first = first; return n; };
+  const auto leaf = [](uint32_t prim) { BvhNode n; n.first = prim; n.prim_count = 1; return n; };
+  for (const BvhNode& node : {interior(1), interior(3), interior(5), interior(7), leaf(0), leaf(3), leaf(4), leaf(1), leaf(2)})
+    interleaved.nodes.push_back(node);
+  for (uint32_t prim = 0; prim < 5; ++prim) interleaved.prim_indices.push_back(prim);
+  interleaved.depth = 4;
+  std::vector<Aabb> boxes;
+  for (int prim = 0; prim < 5; ++prim) boxes.push_back(Aabb{vec3(float(prim), 0.0f, 0.0f), vec3(float(prim) + 0.5f, 1.0f, 1.0f)});
+  EXPECT_FALSE(detail::refits_in_parallel(interleaved));
+  refit(interleaved, boxes);
+  EXPECT_EQ(interleaved.nodes[0].bounds_min, vec3(0.0f, 0.0f, 0.0f));
+  EXPECT_EQ(interleaved.nodes[0].bounds_max, vec3(4.5f, 1.0f, 1.0f));
+  EXPECT_EQ(interleaved.nodes[3].bounds_min, vec3(1.0f, 0.0f, 0.0f));  // prims 1 and 2
+  EXPECT_EQ(interleaved.nodes[3].bounds_max, vec3(2.5f, 1.0f, 1.0f));
+  EXPECT_NO_THROW(validate_bvh(interleaved, boxes, 1));
+}
+
 TEST(Refit, RefusesNonRefittableStructures) {
   const testing::TestMesh soup = testing::make_random_soup(44, 100);
   Bvh bvh = build_bvh(BvhBuilder::sah, soup.view());
