@@ -15,9 +15,10 @@
 // In parallel, the keys are cut into chunks of a fixed size (so the layout does not depend on the
 // thread count). Each chunk runs the stack machine over its keys, merging only what lies within the
 // chunk; what is left, a few dozen finished subtrees per chunk whose parents cross a chunk border,
-// goes through the same machine again, in order, by one thread. lay_out_lbvh then copies the pairs,
-// chunk by chunk, into one array and rebases their child indices: one sequential pass, where a
-// separate flattening of a stored tree read every node at random.
+// goes through the same machine again, in order, by one thread. lay_out_lbvh then copies the pairs
+// into one array, depth first (so that refit can cut it into subtrees of contiguous descendants),
+// and rebases their child indices: one sequential pass over each chunk's pairs, where a separate
+// flattening of a stored tree read every node at random.
 #include "accel/binary_tree.h"
 #include "accel/build_options.h"
 #include "accel/bvh.h"
@@ -79,8 +80,10 @@ struct LbvhSweep {
 LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const BuildOptions& options,
                      uint32_t chunk_keys = kLbvhChunkKeys);
 
-// The flat Bvh of a sweep: the root at node 0, then the border pass's pairs, then every chunk's.
-// prim_indices = `prims` (the Morton order: a leaf over keys [first, last] is exactly those).
+// The flat Bvh of a sweep: the root at node 0, then every pair depth first (a node's pair, then
+// one child's descendants, then the other's: left first where the border pass made the node, right
+// first where a chunk did). prim_indices = `prims` (the Morton order: a leaf over keys [first,
+// last] is exactly those).
 // glint::Error when the tree is deeper than kMaxBvhDepth (build_lbvh then takes the path that can
 // rebalance).
 Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const std::string& builder);
