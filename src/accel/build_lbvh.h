@@ -1,10 +1,12 @@
 #pragma once
 // Linear BVH (Lauterbach et al. 2009; OptiX 3/4 "Lbvh"): the binary radix tree over the centroids'
 // sorted Morton codes (morton.h, radix_sort.h) of Karras 2012, "Maximizing parallelism in the
-// construction of BVHs, octrees, and k-d trees", built bottom-up as Apetrei 2014, "Fast and simple
-// agglomerative LBVH construction" (one parallel sweep that also fits the boxes and the collapse
-// costs), then flattened with SAH leaf collapsing (bvh_collapse_leaves.h). Fast to build; its
-// quality is bounded by the Morton order, which trbvh and ploc improve on.
+// construction of BVHs, octrees, and k-d trees", with SAH leaf collapsing. build_lbvh makes the tree,
+// its collapse and its flat layout in one sweep over the sorted keys (lbvh_layout.h); the tree as a
+// BinaryTree, for trbvh, comes from Apetrei 2014's bottom-up sweep, "Fast and simple agglomerative
+// LBVH construction" (one parallel sweep that also fits the boxes and the collapse costs), flattened
+// by bvh_collapse_leaves.h. Fast to build; its quality is bounded by the Morton order, which trbvh
+// and ploc improve on.
 #include "accel/binary_tree.h"
 #include "accel/build_options.h"
 #include "accel/bvh.h"
