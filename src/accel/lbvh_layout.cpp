@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <span>
 
 namespace glint::accel::detail {
@@ -165,6 +166,15 @@ size_t run_of(const LbvhChunk& chunk, uint32_t id) {
 }
 
 }  // namespace
+
+uint32_t lbvh_chunk_keys(uint32_t key_count) {
+  constexpr uint32_t kMinChunkKeys = 1024, kMaxChunkKeys = 8192, kChunks = 64;
+  return std::clamp(std::bit_ceil(key_count / kChunks), kMinChunkKeys, kMaxChunkKeys);
+}
+
+LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const BuildOptions& options) {
+  return sweep_lbvh(input, order, options, lbvh_chunk_keys(static_cast<uint32_t>(order.prims.size())));
+}
 
 LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const BuildOptions& options,
                      uint32_t chunk_keys) {

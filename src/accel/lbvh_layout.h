@@ -31,9 +31,12 @@
 
 namespace glint::accel::detail {
 
-// Keys per chunk of the sweep: enough chunks for 16 cores on a few hundred thousand primitives,
-// and few enough that the subtrees left at their borders are negligible work for one thread.
-inline constexpr uint32_t kLbvhChunkKeys = 8192;
+// Keys per chunk of the sweep for `key_count` keys: about 64 chunks, enough for 16 cores, but at
+// least 1,024 keys (below that the subtrees left at the borders, about two per level of a chunk's
+// tree, become a noticeable share of the work of the one thread that merges them) and at most
+// 8,192 (larger chunks gained nothing). A power of two that depends on the key count alone, so
+// the layout does not depend on the thread count.
+uint32_t lbvh_chunk_keys(uint32_t key_count);
 
 // A finished subtree of the radix tree over keys [first, last], with what its parent's collapse
 // needs (SubtreeSummary's cost and height; its primitives are its keys).
@@ -63,7 +66,7 @@ struct LbvhChunk {
 // The sweep's output, before lay_out_lbvh gathers it into a Bvh.
 struct LbvhSweep {
   uint32_t key_count = 0;
-  uint32_t chunk_keys = kLbvhChunkKeys;
+  uint32_t chunk_keys = 0;
   // Pairs of flat nodes (interior nodes' `first` still an id), every chunk's in one block, the
   // blocks in the order the chunks finished; the border pass's pairs are in top_pairs, their ids
   // from 2 key_count on.
@@ -76,9 +79,11 @@ struct LbvhSweep {
 };
 
 // The sweep over order.codes (key i is primitive order.prims[i], box input.boxes[order.prims[i]]),
-// with collapse costs from `options`. chunk_keys >= 1 (tests use small chunks).
+// with collapse costs from `options`, in chunks of lbvh_chunk_keys(keys) keys, or of chunk_keys where
+// given (tests use other sizes; glint::Error for 0).
+LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const BuildOptions& options);
 LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const BuildOptions& options,
-                     uint32_t chunk_keys = kLbvhChunkKeys);
+                     uint32_t chunk_keys);
 
 // The flat Bvh of a sweep: the root at node 0, then every pair depth first (a node's pair, then
 // one child's descendants, then the other's: left first where the border pass made the node, right

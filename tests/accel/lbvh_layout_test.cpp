@@ -45,7 +45,7 @@ TEST(LbvhLayout, GivesTheBinaryTreePathsTreeWhateverTheChunkSize) {
       const Bvh binary = binary_tree_lbvh(bounds.input(), options);
       // 1: every key a chunk of its own, so the border pass builds the whole tree; 3: collapses
       // across chunk borders drop pairs the chunks wrote; one chunk: no border pass at all.
-      for (const uint32_t chunk_keys : {1u, 3u, 64u, detail::kLbvhChunkKeys, 1u << 20}) {
+      for (const uint32_t chunk_keys : {1u, 3u, 64u, 1024u, 8192u, 1u << 20}) {
         const std::string where = std::to_string(scene.triangle_count()) + " triangles, leaf size " +
                                   std::to_string(leaf_size) + ", chunks of " + std::to_string(chunk_keys);
         const Bvh swept = swept_lbvh(bounds.input(), options, chunk_keys);
@@ -93,6 +93,21 @@ TEST(LbvhLayout, EmptyAndSingleKeyInputs) {
   EXPECT_EQ(single.nodes[0].prim_count, 1u);
   EXPECT_EQ(single.nodes[0].first, 0u);
   EXPECT_EQ(single.depth, 1u);
+}
+
+TEST(LbvhLayout, ChunkSizeFollowsTheKeyCountOnly) {
+  EXPECT_EQ(detail::lbvh_chunk_keys(0), 1024u);
+  EXPECT_EQ(detail::lbvh_chunk_keys(39706), 1024u);    // one deforming dinosaur: 39 chunks
+  EXPECT_EQ(detail::lbvh_chunk_keys(100000), 2048u);   // 100000 / 64 = 1562, rounded up
+  EXPECT_EQ(detail::lbvh_chunk_keys(617800), 8192u);   // atrium: 76 chunks
+  EXPECT_EQ(detail::lbvh_chunk_keys(1u << 30), 8192u);
+  // build_lbvh's sweep is the one with that size.
+  const testing::TestMesh scene = testing::make_clustered(53, 150000);
+  const PrimitiveBounds bounds = triangle_bounds(scene.view());
+  const Bvh swept = swept_lbvh(bounds.input(), BuildOptions{}, detail::lbvh_chunk_keys(150000));
+  const Bvh built = build_lbvh(bounds.input());
+  ASSERT_EQ(swept.nodes.size(), built.nodes.size());
+  EXPECT_EQ(0, std::memcmp(swept.nodes.data(), built.nodes.data(), built.nodes.size() * sizeof(BvhNode)));
 }
 
 TEST(LbvhLayout, RejectsChunksOfNoKeys) {
