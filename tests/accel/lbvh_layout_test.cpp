@@ -97,7 +97,8 @@ TEST(LbvhLayout, EmptyAndSingleKeyInputs) {
 
 TEST(LbvhLayout, ChunkSizeFollowsTheKeyCountOnly) {
   EXPECT_EQ(detail::lbvh_chunk_keys(0), 1024u);
-  EXPECT_EQ(detail::lbvh_chunk_keys(39706), 1024u);    // one deforming dinosaur: 39 chunks
+  EXPECT_EQ(detail::lbvh_chunk_keys(50000), 1024u);    // 50000 / 64 = 781, rounded up, then the floor
+  EXPECT_EQ(detail::lbvh_chunk_keys(79412), 2048u);    // the deforming dinosaurs: 39 chunks
   EXPECT_EQ(detail::lbvh_chunk_keys(100000), 2048u);   // 100000 / 64 = 1562, rounded up
   EXPECT_EQ(detail::lbvh_chunk_keys(617800), 8192u);   // atrium: 76 chunks
   EXPECT_EQ(detail::lbvh_chunk_keys(1u << 30), 8192u);
