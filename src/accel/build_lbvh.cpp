@@ -12,14 +12,6 @@ namespace glint::accel {
 namespace detail {
 namespace {
 
-// Leaves ahead whose boxes the sweep prefetches: the boxes are read in Morton order, so at random,
-// and fetching a few leaves ahead hides the cache misses that were a third of the sweep.
-inline constexpr uint32_t kBoxPrefetchDistance = 16;
-
-void prefetch_leaf_box(const BuildInput& input, std::span<const uint32_t> prims, uint32_t leaf) {
-  if (leaf + kBoxPrefetchDistance < prims.size()) __builtin_prefetch(&input.boxes[prims[leaf + kBoxPrefetchDistance]]);
-}
-
 // The sweep into a BinaryTree. visit_leaf(leaf) and visit_interior(node) run once per node, children
 // before parents, with the node's children, prim and box already written.
 template <typename VisitLeaf, typename VisitInterior>
@@ -34,7 +26,7 @@ void build_binary_radix_tree(BinaryTree& tree, const BuildInput& input, const Mo
   tree.root = sweep_radix_tree(
       order.codes,
       [&](uint32_t leaf) {
-        prefetch_leaf_box(input, order.prims, leaf);
+        prefetch_box_ahead(input, order.prims, leaf);
         TreeNode& leaf_node = tree.nodes[leaf];
         leaf_node.prim = order.prims[leaf];
         leaf_node.box = input.boxes[leaf_node.prim];

@@ -1,7 +1,5 @@
 #include "accel/bvh_collapse_leaves.h"
 
-#include "core/error.h"
-
 #include <tbb/task_group.h>
 
 #include <algorithm>
@@ -79,32 +77,18 @@ void limit_depth(Rebalancer& rebalancer, std::span<const SubtreeSummary> summari
   }
 }
 
-// Writes a BinaryTree with its summaries into a Bvh, collapsed subtrees as leaves.
 struct Flattener {
   const BinaryTree& tree;
   std::span<const SubtreeSummary> summaries;
   Bvh& bvh;
   uint32_t parallel_threshold;
 
-  // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
-  // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
-  // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
-  uint32_t gather_prims(uint32_t id, uint32_t slot) const {
-    const TreeNode& n = tree.nodes[id];
-    if (n.is_leaf()) {
-      bvh.prim_indices[slot] = n.prim;
-      return slot + 1;
-    }
-    return gather_prims(n.right, gather_prims(n.left, slot));
-  }
-
-  // Writes `node`, whose primitives go to prim_indices from first_prim, at bvh.nodes[out]; its
-  // descendants (if it stays interior) fill [descendants, descendants + out_nodes - 1): first its
-  // two children, then the left child's descendants, then the right child's, which is the order
-  // top_down_builder produces.
+  // Writes `node` at bvh.nodes[out]; its descendants (if it stays interior) fill
+  // [descendants, descendants + out_nodes - 1): first its two children, then the left child's
+  // descendants, then the right child's, which is the order top_down_builder produces.
   void emit(uint32_t node, uint32_t out, uint32_t descendants, uint32_t first_prim) const {
-    const TreeNode& n = tree.nodes[node];
     const SubtreeSummary& summary = summaries[node];
+    const TreeNode& n = tree.nodes[node];
     BvhNode& flat = bvh.nodes[out];
     flat.set_bounds(n.box);
     if (summary.collapse) {
@@ -128,6 +112,18 @@ struct Flattener {
       emit(n.left, descendants, left_descendants, first_prim);
       emit(n.right, descendants + 1, right_descendants, right_first_prim);
     }
+  }
+
+  // The subtree's primitives, left to right, into consecutive prim_indices slots from `slot`;
+  // returns the slot after the last. Recursion rather than a heap-allocated stack (this runs once
+  // per leaf): a collapsed subtree has at most max_leaf_size primitives, so fewer levels than that.
+  uint32_t gather_prims(uint32_t node, uint32_t slot) const {
+    const TreeNode& n = tree.nodes[node];
+    if (n.is_leaf()) {
+      bvh.prim_indices[slot] = n.prim;
+      return slot + 1;
+    }
+    return gather_prims(n.right, gather_prims(n.left, slot));
   }
 };
 

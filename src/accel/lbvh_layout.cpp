@@ -1,6 +1,7 @@
 #include "accel/lbvh_layout.h"
 
 #include "accel/radix_tree_sweep.h"
+#include "accel/unzeroed_vector.h"
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>
@@ -14,9 +15,6 @@
 
 namespace glint::accel::detail {
 namespace {
-
-// Keys ahead whose boxes the sweep prefetches: they are read in Morton order, so at random.
-constexpr uint32_t kBoxPrefetchDistance = 16;
 
 // Writes the flat node of a finished subtree: a leaf over its keys, or an interior node whose
 // `first` is its children's pair (in the sweep's numbering until lay_out_lbvh rebases it). Field by
@@ -132,18 +130,18 @@ class SubtreeStack {
 // enough to stay in cache), then copied to the next free place in sweep.pairs: the shared array is
 // then filled from the start, and its pages past what the pairs need are never touched.
 std::vector<LbvhSubtree> sweep_chunk(const BuildInput& input, const MortonOrder& order, const BuildOptions& options,
-                                     uint32_t c, std::vector<BvhNode>& local, std::atomic<uint32_t>& stored,
+                                     uint32_t c, UnzeroedVector<BvhNode>& local, std::atomic<uint32_t>& stored,
                                      LbvhSweep& sweep) {
   const uint32_t begin = c * sweep.chunk_keys;
   const uint32_t end = std::min(sweep.key_count, begin + sweep.chunk_keys);
-  local.resize(2 * size_t{sweep.chunk_keys});
+  local.resize(2 * size_t{sweep.chunk_keys});  // only the pairs written are read (unzeroed_vector.h)
   const uint32_t local_end = 2 * (end - begin);
   PairOutput output{local.data(), local_end, 2 * begin};  // ids as if the region were [2 begin, 2 end)
   std::vector<LbvhSubtree> border;
   SubtreeStack stack(order.codes, options, output, &border);
   LbvhSubtree subtree;
   for (uint32_t key = begin; key != end; ++key) {
-    if (key + kBoxPrefetchDistance < end) __builtin_prefetch(&input.boxes[order.prims[key + kBoxPrefetchDistance]]);
+    prefetch_box_ahead(input, order.prims, key);
     stack.make_leaf(key, input.boxes[order.prims[key]], subtree);
     stack.add(subtree);
   }
@@ -157,6 +155,11 @@ std::vector<LbvhSubtree> sweep_chunk(const BuildInput& input, const MortonOrder&
   chunk.begins.resize(border.size());
   for (size_t i = 0; i < border.size(); ++i) chunk.begins[i] = border[i].pairs_begin;
   return border;
+}
+
+// The pair after run i of `chunk` (LbvhChunk::begins).
+uint32_t run_end(const LbvhChunk& chunk, size_t i) {
+  return i + 1 < chunk.begins.size() ? chunk.begins[i + 1] : chunk.pair_count;
 }
 
 // Which of chunk `chunk`'s runs (LbvhChunk::begins) holds the pair at sweep position `id`.
@@ -187,7 +190,7 @@ LbvhSweep sweep_lbvh(const BuildInput& input, const MortonOrder& order, const Bu
   sweep.pairs = ParallelArray<BvhNode>(2 * size_t{sweep.key_count}, kForOverwrite);  // written before read
   sweep.chunks.resize(chunk_count);
   std::vector<std::vector<LbvhSubtree>> borders(chunk_count);
-  tbb::enumerable_thread_specific<std::vector<BvhNode>> local_pairs;
+  tbb::enumerable_thread_specific<UnzeroedVector<BvhNode>> local_pairs;
   std::atomic<uint32_t> stored{0};
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, chunk_count, 1), [&](const tbb::blocked_range<uint32_t>& r) {
     for (uint32_t c = r.begin(); c != r.end(); ++c)
@@ -252,10 +255,11 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
       walk.push_back(pair[0]);
       continue;
     }
-    const LbvhChunk& chunk = sweep.chunks[node.first / (2 * sweep.chunk_keys)];
+    const size_t c = node.first / (2 * sweep.chunk_keys);
+    const LbvhChunk& chunk = sweep.chunks[c];
     const size_t i = run_of(chunk, node.first);
-    const uint32_t end = i + 1 < chunk.begins.size() ? chunk.begins[i + 1] : chunk.pair_count;
-    Run& run = run_at(node.first);
+    const uint32_t end = run_end(chunk, i);
+    Run& run = runs[c][i];
     run.kept = true;
     run.shift = int64_t{next} - (int64_t{chunk.region_end} - 2 * int64_t{end});
     next += 2 * (end - chunk.begins[i]);
@@ -267,7 +271,7 @@ Bvh lay_out_lbvh(const LbvhSweep& sweep, UnzeroedVector<uint32_t> prims, const s
       const LbvhChunk& chunk = sweep.chunks[c];
       for (size_t i = 0; i < chunk.begins.size(); ++i) {
         if (!runs[c][i].kept) continue;
-        const uint32_t end = i + 1 < chunk.begins.size() ? chunk.begins[i + 1] : chunk.pair_count;
+        const uint32_t end = run_end(chunk, i);
         const uint32_t from = chunk.region_end - 2 * end, to = chunk.region_end - 2 * chunk.begins[i];
         const int64_t shift = runs[c][i].shift;
         // A run's interior nodes link only to pairs of the same run.

@@ -89,37 +89,18 @@ MortonOrder fine_codes(std::span<const vec3> centroids, const UnitMapping& mappi
 // by primitive, std::sort) of their own.
 constexpr size_t kInsertionSortRun = 64;
 
-// Stable insertion sort of a short run of (code, prim) pairs by key(code, prim). Each pair is held
-// while the larger ones move up, then written once: swapping neighbours instead re-read what the
-// previous step had just written, and stalled on store forwarding.
-template <typename Key>
-void insertion_sort_run(std::span<uint64_t> codes, std::span<uint32_t> prims, Key&& key) {
-  for (size_t i = 1; i < codes.size(); ++i) {
-    const uint64_t code = codes[i];
-    const uint32_t prim = prims[i];
-    const auto sort_key = key(code, prim);
-    size_t j = i;
-    for (; j > 0 && key(codes[j - 1], prims[j - 1]) > sort_key; --j) {
-      codes[j] = codes[j - 1];
-      prims[j] = prims[j - 1];
-    }
-    codes[j] = code;
-    prims[j] = prim;
-  }
-}
-
 // Orders one run of equal 30-bit codes by the remaining 33 bits, stably (the run is in index order).
 void sort_run_by_fine_bits(std::span<uint64_t> codes, std::span<uint32_t> prims) {
   if (codes.size() > kInsertionSortRun)
     radix_sort_pairs_by_bits(codes, prims, 0, kCoarseShift);
   else
-    insertion_sort_run(codes, prims, [](uint64_t code, uint32_t) { return code; });
+    insertion_sort_pairs(codes, prims, [](uint64_t code, uint32_t) { return code; });
 }
 
 // Puts one run of equal 30-bit codes back in index order, the 30-bit stable order.
 void sort_run_by_prim(std::span<uint64_t> codes, std::span<uint32_t> prims) {
   if (codes.size() <= kInsertionSortRun) {
-    insertion_sort_run(codes, prims, [](uint64_t, uint32_t prim) { return prim; });
+    insertion_sort_pairs(codes, prims, [](uint64_t, uint32_t prim) { return prim; });
     return;
   }
   std::vector<std::pair<uint32_t, uint64_t>> pairs(codes.size());
@@ -149,10 +130,10 @@ size_t count_and_refine_runs(std::span<uint64_t> codes, std::span<uint32_t> prim
   return collisions;
 }
 
-// Sorts every run of equal top 30 bits with sort_run, in parallel. Runs are found by the chunk they
-// start in, so each is sorted once, by one task, even where it crosses into the next chunk.
-template <typename SortRun>
-void sort_coarse_runs(MortonOrder& order, SortRun&& sort_run) {
+// Puts every run of equal top 30 bits back in index order (sort_run_by_prim), in parallel. Runs are
+// found by the chunk they start in, so each is sorted once, by one task, even where it crosses into
+// the next chunk.
+void restore_coarse_runs(MortonOrder& order) {
   const size_t count = order.codes.size();
   const std::span<uint64_t> codes(order.codes);
   const std::span<uint32_t> prims(order.prims);
@@ -163,7 +144,7 @@ void sort_coarse_runs(MortonOrder& order, SortRun&& sort_run) {
     while (begin < r.end()) {
       size_t end = begin + 1;
       while (end < count && coarse(end) == coarse(begin)) ++end;
-      if (end - begin > 1) sort_run(codes.subspan(begin, end - begin), prims.subspan(begin, end - begin));
+      if (end - begin > 1) sort_run_by_prim(codes.subspan(begin, end - begin), prims.subspan(begin, end - begin));
       begin = end;
     }
   });
@@ -199,7 +180,7 @@ MortonOrder sort_by_morton(std::span<const vec3> centroids) {
     return order;
   }
   order.bits = 30;
-  sort_coarse_runs(order, sort_run_by_prim);
+  restore_coarse_runs(order);
   tbb::parallel_for(tbb::blocked_range<size_t>(0, order.codes.size(), 8192), [&](const tbb::blocked_range<size_t>& r) {
     for (size_t i = r.begin(); i != r.end(); ++i) order.codes[i] >>= kCoarseShift;
   });

@@ -134,18 +134,8 @@ void sort_in_cache(PairArrays from, PairArrays to, size_t count, uint32_t low_bi
   if (count <= kInsertionSortMaxCount) {
     std::copy(from.keys, from.keys + count, to.keys);
     std::copy(from.values, from.values + count, to.values);
-    for (size_t i = 1; i < count; ++i) {
-      const uint64_t key = to.keys[i];
-      const uint32_t value = to.values[i];
-      const uint64_t bits = bits_of(key, low_bit, high_bit);
-      size_t j = i;
-      for (; j > 0 && bits_of(to.keys[j - 1], low_bit, high_bit) > bits; --j) {
-        to.keys[j] = to.keys[j - 1];
-        to.values[j] = to.values[j - 1];
-      }
-      to.keys[j] = key;
-      to.values[j] = value;
-    }
+    insertion_sort_pairs(std::span(to.keys, count), std::span(to.values, count),
+                         [&](uint64_t key, uint32_t) { return bits_of(key, low_bit, high_bit); });
     return;
   }
   constexpr uint32_t kLocalDigits = 1u << kLocalDigitBits;

@@ -31,4 +31,24 @@ using SortedRangeVisitor = std::function<void(size_t begin, size_t end)>;
 void radix_sort_pairs_by_bits(std::span<uint64_t> keys, std::span<uint32_t> values, uint32_t low_bit,
                               uint32_t high_bit, const SortedRangeVisitor& visit);
 
+// Stable insertion sort of short arrays of (key, value) pairs by sort_key(key, value), for the
+// buckets and runs too short for radix passes. Each pair is held while the larger ones move up, then
+// written once: swapping neighbours instead re-read what the step before had just written, and
+// stalled on store forwarding.
+template <typename SortKey>
+void insertion_sort_pairs(std::span<uint64_t> keys, std::span<uint32_t> values, SortKey&& sort_key) {
+  for (size_t i = 1; i < keys.size(); ++i) {
+    const uint64_t key = keys[i];
+    const uint32_t value = values[i];
+    const auto held = sort_key(key, value);
+    size_t j = i;
+    for (; j > 0 && sort_key(keys[j - 1], values[j - 1]) > held; --j) {
+      keys[j] = keys[j - 1];
+      values[j] = values[j - 1];
+    }
+    keys[j] = key;
+    values[j] = value;
+  }
+}
+
 }  // namespace glint::accel

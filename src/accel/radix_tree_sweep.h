@@ -11,9 +11,19 @@
 #include <cstdint>
 #include <span>
 
+#include "accel/build_options.h"
 #include "accel/parallel_array.h"
 
 namespace glint::accel::detail {
+
+// Keys ahead whose boxes the sweeps prefetch: the boxes are read in Morton order, so at random, and
+// fetching a few keys ahead hides the cache misses that were a third of a sweep.
+inline constexpr uint32_t kBoxPrefetchDistance = 16;
+
+// Prefetches the box of the primitive kBoxPrefetchDistance keys after `key` (prims: the Morton order).
+inline void prefetch_box_ahead(const BuildInput& input, std::span<const uint32_t> prims, uint32_t key) {
+  if (key + kBoxPrefetchDistance < prims.size()) __builtin_prefetch(&input.boxes[prims[key + kBoxPrefetchDistance]]);
+}
 
 // Karras's delta(i, j): the length of the common prefix of keys i and j, where a key is the Morton
 // code followed by the 32-bit position (so equal codes still differ).
