@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string_view>
 
 namespace glint {
@@ -54,6 +55,19 @@ struct AccessorView {
   std::size_t component_bytes = 0;
 };
 
+// a + b and a * b, or nullopt when they do not fit a size_t: every size below comes from the file,
+// so any sum or product of them may wrap around.
+std::optional<std::size_t> checked_add(std::size_t a, std::size_t b) {
+  std::size_t sum = 0;
+  if (__builtin_add_overflow(a, b, &sum)) return std::nullopt;
+  return sum;
+}
+std::optional<std::size_t> checked_multiply(std::size_t a, std::size_t b) {
+  std::size_t product = 0;
+  if (__builtin_mul_overflow(a, b, &product)) return std::nullopt;
+  return product;
+}
+
 AccessorView view_accessor(const tinygltf::Model& model, int accessor_index, int components, const std::string& where) {
   if (accessor_index < 0 || static_cast<std::size_t>(accessor_index) >= model.accessors.size())
     fail("{}: accessor {} does not exist ({} accessors)", where, accessor_index, model.accessors.size());
@@ -67,7 +81,14 @@ AccessorView view_accessor(const tinygltf::Model& model, int accessor_index, int
   if (view.component_bytes == 0 || view.component_bytes == 8)
     fail("{}: unsupported component type {}", at, accessor.componentType);
   if (accessor.sparse.isSparse) fail("{}: sparse accessors are not supported", at);
-  if (accessor.bufferView < 0) return view;
+  const std::size_t element_bytes = view.component_bytes * static_cast<std::size_t>(components);
+  if (accessor.bufferView < 0) {
+    // All zeros, with no bytes in the file to bound the count: only small ones are believed.
+    if (accessor.count > kMaxZeroAccessorElements)
+      fail("{}: count {} without a bufferView (all zeros) exceeds glint's limit of {} elements", at, accessor.count,
+           kMaxZeroAccessorElements);
+    return view;
+  }
 
   if (static_cast<std::size_t>(accessor.bufferView) >= model.bufferViews.size())
     fail("{}: bufferView {} does not exist ({} bufferViews)", at, accessor.bufferView, model.bufferViews.size());
@@ -75,18 +96,25 @@ AccessorView view_accessor(const tinygltf::Model& model, int accessor_index, int
   if (buffer_view.buffer < 0 || static_cast<std::size_t>(buffer_view.buffer) >= model.buffers.size())
     fail("{}: bufferViews[{}] refers to buffer {}, which does not exist", at, accessor.bufferView, buffer_view.buffer);
   const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(buffer_view.buffer)];
-  if (buffer_view.byteOffset + buffer_view.byteLength > buffer.data.size())
-    fail("{}: bufferViews[{}] spans bytes {}..{} but buffers[{}] has {} bytes", at, accessor.bufferView,
-         buffer_view.byteOffset, buffer_view.byteOffset + buffer_view.byteLength, buffer_view.buffer, buffer.data.size());
+  const std::optional<std::size_t> view_end = checked_add(buffer_view.byteOffset, buffer_view.byteLength);
+  if (!view_end || *view_end > buffer.data.size())
+    fail("{}: bufferViews[{}] (byteOffset {}, byteLength {}) runs past the end of buffers[{}] ({} bytes)", at,
+         accessor.bufferView, buffer_view.byteOffset, buffer_view.byteLength, buffer_view.buffer, buffer.data.size());
 
-  const std::size_t element_bytes = view.component_bytes * static_cast<std::size_t>(components);
   view.stride = buffer_view.byteStride != 0 ? buffer_view.byteStride : element_bytes;
   if (view.stride < element_bytes) fail("{}: byteStride {} is smaller than an element ({} bytes)", at, view.stride, element_bytes);
+  if (accessor.byteOffset > buffer_view.byteLength)
+    fail("{}: byteOffset {} is past the end of bufferViews[{}] ({} bytes)", at, accessor.byteOffset,
+         accessor.bufferView, buffer_view.byteLength);
   if (accessor.count > 0) {
-    const std::size_t end = accessor.byteOffset + view.stride * (accessor.count - 1) + element_bytes;
-    if (end > buffer_view.byteLength)
-      fail("{}: {} elements end at byte {} but bufferViews[{}] has {} bytes", at, accessor.count, end,
-           accessor.bufferView, buffer_view.byteLength);
+    // The last element ends at byteOffset + stride * (count - 1) + element bytes, which must fit the
+    // view; computed without wrapping, before anything is allocated for the elements.
+    std::optional<std::size_t> end = checked_multiply(view.stride, accessor.count - 1);
+    if (end) end = checked_add(*end, accessor.byteOffset);
+    if (end) end = checked_add(*end, element_bytes);
+    if (!end || *end > buffer_view.byteLength)
+      fail("{}: count {} (stride {} bytes, byteOffset {}) does not fit: bufferViews[{}] has {} bytes", at,
+           accessor.count, view.stride, accessor.byteOffset, accessor.bufferView, buffer_view.byteLength);
   }
   view.data = buffer.data.data() + buffer_view.byteOffset + accessor.byteOffset;
   return view;

@@ -2,14 +2,19 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/untrusted_text.h"
 #include "scene/default_walkthrough.h"
 #include "scene/gltf_accessors.h"
+#include "scene/gltf_cameras.h"
+#include "scene/gltf_document_checks.h"
 #include "scene/gltf_materials.h"
 #include "scene/mesh_ops.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -18,6 +23,11 @@ namespace glint {
 namespace {
 
 constexpr int kNoSlot = -1;
+
+// The most instances a glTF's node hierarchy may expand to (docs/scene-format.md, "Limits"): far
+// above real scenes (the paper's largest has a few hundred), far below what would exhaust memory
+// (an instance is about 100 bytes here, and more in every acceleration structure).
+constexpr std::uint64_t kMaxGltfInstances = 1'000'000;
 
 // True when the file starts with the binary glTF magic "glTF" (whatever its extension says).
 bool is_binary_gltf(const std::filesystem::path& path) {
@@ -59,8 +69,9 @@ mat4 local_transform(const tinygltf::Node& node) {
 // Turns one tinygltf::Model into a Scene, converting meshes, materials and images on first use.
 class GltfSceneBuilder {
 public:
-  GltfSceneBuilder(const tinygltf::Model& model, const std::filesystem::path& path, const LoadOptions& options)
-      : model_(model), path_(path), label_(path.string()), options_(options) {
+  GltfSceneBuilder(const tinygltf::Model& model, const GltfImageFailures& image_failures,
+                   const std::filesystem::path& path, const LoadOptions& options)
+      : model_(model), image_failures_(image_failures), path_(path), label_(path.string()), options_(options) {
     scene_.name = path.stem().string();
     scene_.source = label_;
     primitive_slots_.resize(model.meshes.size());
@@ -70,7 +81,9 @@ public:
   }
 
   Scene build() {
-    for (int root : root_nodes()) visit_node(root, mat4(1.0f), 0);
+    const std::vector<int> roots = root_nodes();
+    check_instance_expansion(roots);
+    expand_nodes(roots);
     if (skipped_primitives_ > 0)
       log_warning("{}: skipped {} primitive(s) made of points or lines (only triangles are loaded)", label_,
                   skipped_primitives_);
@@ -78,6 +91,8 @@ public:
       log_warning("{}: dropped {} degenerate (zero-area) triangle(s)", label_, degenerate_triangles_);
     if (scene_.instances.empty()) fail("{}: the scene is empty (no node of the scene references triangles)", label_);
     assign_default_walkthrough(scene_);
+    if (first_camera_)  // the file's own camera replaces the default camera (gltf_cameras.h)
+      if (auto camera = gltf_fixed_camera(model_, *first_camera_, label_)) scene_.walkthrough.camera = *camera;
     scene_.validate();
     return std::move(scene_);
   }
@@ -100,26 +115,93 @@ private:
     return roots;
   }
 
-  void visit_node(int index, const mat4& parent, std::size_t depth) {
-    if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
-      fail("{}: node {} does not exist ({} nodes)", label_, index, model_.nodes.size());
-    // A hierarchy deeper than the node count must revisit a node: the "tree" has a cycle.
-    if (depth > model_.nodes.size()) fail("{}: nodes[{}]: the node hierarchy has a cycle", label_, index);
-    const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
-    const mat4 world = parent * local_transform(node);  // parent * child: the child's frame nests in the parent's
-    if (node.mesh >= 0) {
-      if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
-        fail("{}: nodes[{}]: mesh {} does not exist ({} meshes)", label_, index, node.mesh, model_.meshes.size());
-      const std::string name = node.name.empty() ? fmt::format("nodes[{}]", index) : node.name;
-      const std::size_t primitives = model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size();
-      for (std::size_t p = 0; p < primitives; ++p) {
-        const int slot = mesh_slot(static_cast<std::size_t>(node.mesh), p);
-        if (slot == kNoSlot) continue;
-        scene_.instances.push_back({primitives > 1 ? fmt::format("{}/{}", name, p) : name,
-                                    static_cast<std::uint32_t>(slot), world});
+  // The node graph may be a DAG (a child listed by several parents, or twice by one): each path from a
+  // root is one more instance, so 41 levels that each list the same child twice are 2^41 instances
+  // in 1.3 KB of JSON. Count them first, per node and saturating, with a depth-first walk that also
+  // finds cycles, and refuse more than kMaxGltfInstances before anything is expanded.
+  void check_instance_expansion(const std::vector<int>& roots) const {
+    enum class State : std::uint8_t { unvisited, open, done };
+    std::vector<State> state(model_.nodes.size(), State::unvisited);
+    std::vector<std::uint64_t> instances(model_.nodes.size(), 0);  // below and at each node, saturated
+    const auto saturating_add = [](std::uint64_t a, std::uint64_t b) {
+      return std::min<std::uint64_t>(a + b, kMaxGltfInstances + 1);  // both <= limit + 1: no wrap
+    };
+    const auto check_index = [&](int index) {
+      if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
+        fail("{}: node {} does not exist ({} nodes)", label_, index, model_.nodes.size());
+      return static_cast<std::size_t>(index);
+    };
+    struct Frame {
+      std::size_t node;
+      std::size_t next_child;
+    };
+    std::vector<Frame> stack;  // explicit, so that a chain of a million nodes cannot overflow the call stack
+    std::uint64_t total = 0;
+    for (int root : roots) {
+      const std::size_t start = check_index(root);
+      if (state[start] != State::done) {
+        stack.push_back({start, 0});
+        state[start] = State::open;
       }
+      while (!stack.empty()) {
+        Frame& frame = stack.back();
+        const tinygltf::Node& node = model_.nodes[frame.node];
+        if (frame.next_child < node.children.size()) {
+          const std::size_t child = check_index(node.children[frame.next_child++]);
+          if (state[child] == State::open) fail("{}: nodes[{}]: the node hierarchy has a cycle", label_, child);
+          if (state[child] == State::unvisited) {
+            state[child] = State::open;
+            stack.push_back({child, 0});
+          }
+          continue;
+        }
+        std::uint64_t count = 0;
+        if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < model_.meshes.size())
+          count = model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size();  // at most one instance each
+        for (int child : node.children) count = saturating_add(count, instances[static_cast<std::size_t>(child)]);
+        instances[frame.node] = std::min<std::uint64_t>(count, kMaxGltfInstances + 1);
+        state[frame.node] = State::done;
+        stack.pop_back();
+      }
+      total = saturating_add(total, instances[start]);
     }
-    for (int child : node.children) visit_node(child, world, depth + 1);
+    if (total > kMaxGltfInstances)
+      fail("{}: the node hierarchy expands to more than {} instances (nodes reached along many paths, e.g. a "
+           "child listed twice at many levels); glint refuses scenes above that limit",
+           label_, kMaxGltfInstances);
+  }
+
+  // Every node reached from the roots, depth first and children in order (each path one instance),
+  // with the hierarchy's world transform. check_instance_expansion has bounded the work and ruled out
+  // cycles and missing nodes.
+  void expand_nodes(const std::vector<int>& roots) {
+    struct Pending {
+      int node;
+      mat4 parent;
+    };
+    std::vector<Pending> stack;
+    for (auto root = roots.rbegin(); root != roots.rend(); ++root) stack.push_back({*root, mat4(1.0f)});
+    while (!stack.empty()) {
+      const Pending pending = stack.back();
+      stack.pop_back();
+      const int index = pending.node;
+      const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
+      const mat4 world = pending.parent * local_transform(node);  // parent * child: the child's frame nests in the parent's
+      if (node.camera >= 0 && !first_camera_) first_camera_ = GltfCameraNode{index, world};
+      if (node.mesh >= 0) {
+        if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
+          fail("{}: nodes[{}]: mesh {} does not exist ({} meshes)", label_, index, node.mesh, model_.meshes.size());
+        const std::string name = node.name.empty() ? fmt::format("nodes[{}]", index) : node.name;
+        const std::size_t primitives = model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size();
+        for (std::size_t p = 0; p < primitives; ++p) {
+          const int slot = mesh_slot(static_cast<std::size_t>(node.mesh), p);
+          if (slot == kNoSlot) continue;
+          scene_.instances.push_back({primitives > 1 ? fmt::format("{}/{}", name, p) : name,
+                                      static_cast<std::uint32_t>(slot), world});
+        }
+      }
+      for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back({*child, world});
+    }
   }
 
   // Index of the glint Mesh for a primitive (converted on first use), or kNoSlot when it has no triangles.
@@ -267,8 +349,11 @@ private:
       const tinygltf::Image& image = model_.images[static_cast<std::size_t>(image_index)];
       const std::string image_where = fmt::format("{}: images[{}]", label_, image_index);
       if (image.image.empty()) {
-        // Like a missing OBJ texture, not fatal: tinygltf already warned that the file was not found.
-        log_warning("{}: image \"{}\" could not be loaded; the material stays untextured", image_where, image.uri);
+        // Like a missing OBJ texture, not fatal (tinygltf has warned when the file was not found).
+        const auto failure = image_failures_.reasons.find(image_index);
+        log_warning("{}: image \"{}\" could not be loaded{}; the material stays untextured", image_where,
+                    untrusted_text(image.uri),
+                    failure == image_failures_.reasons.end() ? std::string() : ": " + failure->second);
         slot = -1;
       } else {
         const bool external = !image.uri.empty() && image.uri.rfind("data:", 0) != 0;
@@ -281,6 +366,7 @@ private:
   }
 
   const tinygltf::Model& model_;
+  const GltfImageFailures& image_failures_;
   std::filesystem::path path_;
   std::string label_;
   LoadOptions options_;
@@ -289,6 +375,7 @@ private:
   std::vector<int> material_slots_;
   std::vector<std::optional<int>> image_slots_;
   int default_material_ = kNoSlot;
+  std::optional<GltfCameraNode> first_camera_;
   std::size_t skipped_primitives_ = 0;
   std::size_t degenerate_triangles_ = 0;
 };
@@ -300,16 +387,20 @@ Scene load_gltf(const std::filesystem::path& path, const LoadOptions& options) {
   std::error_code ignored;
   if (!std::filesystem::is_regular_file(path, ignored)) fail("{}: no such file", label);
 
+  check_gltf_document(path, label);
+
   tinygltf::TinyGLTF reader;
+  GltfImageFailures image_failures;
+  reader.SetImageLoader(&decode_gltf_image, &image_failures);
   tinygltf::Model model;
   std::string error, warning;
   const bool ok = is_binary_gltf(path) ? reader.LoadBinaryFromFile(&model, &error, &warning, label)
                                        : reader.LoadASCIIFromFile(&model, &error, &warning, label);
   std::istringstream warnings(warning);
   for (std::string line; std::getline(warnings, line);)
-    if (!line.empty()) log_warning("{}: {}", label, line);
-  if (!ok) fail("{}: malformed glTF: {}", label, error.empty() ? "unknown error" : trimmed(error));
-  return GltfSceneBuilder(model, path, options).build();
+    if (!line.empty()) log_warning("{}: {}", label, untrusted_text(line));  // tinygltf quotes names from the file
+  if (!ok) fail("{}: malformed glTF: {}", label, error.empty() ? "unknown error" : untrusted_text(trimmed(error)));
+  return GltfSceneBuilder(model, image_failures, path, options).build();
 }
 
 }  // namespace glint

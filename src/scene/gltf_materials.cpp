@@ -1,6 +1,8 @@
 #include "scene/gltf_materials.h"
 
 #include "core/error.h"
+#include "core/untrusted_text.h"
+#include "scene/texture_io.h"
 
 #include <algorithm>
 #include <cstring>
@@ -35,7 +37,7 @@ Texture convert_gltf_image(const tinygltf::Image& image, const std::string& name
   const int channels = image.component;
   const int bytes_per_channel = image.bits == 16 ? 2 : 1;
   if (image.width <= 0 || image.height <= 0 || image.image.empty())
-    fail("{}: the image could not be loaded{}", where, image.uri.empty() ? "" : fmt::format(" (\"{}\")", image.uri));
+    fail("{}: the image could not be loaded{}", where, image.uri.empty() ? "" : fmt::format(" (\"{}\")", untrusted_text(image.uri)));
   if (channels < 1 || channels > 4 || (image.bits != 8 && image.bits != 16))
     fail("{}: unsupported pixel format ({} channels of {} bits)", where, channels, image.bits);
   const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
@@ -69,6 +71,25 @@ Texture convert_gltf_image(const tinygltf::Image& image, const std::string& name
     }
   }
   return texture;
+}
+
+bool decode_gltf_image(tinygltf::Image* image, int image_index, std::string* /*error*/, std::string* /*warning*/,
+                       int /*required_width*/, int /*required_height*/, const unsigned char* bytes, int size,
+                       void* user_data) {
+  try {
+    const Texture texture =
+        decode_texture(std::span<const unsigned char>(bytes, size > 0 ? static_cast<std::size_t>(size) : 0u), image->uri);
+    image->width = texture.width;
+    image->height = texture.height;
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image = texture.rgba;
+  } catch (const Error& e) {
+    image->image.clear();
+    static_cast<GltfImageFailures*>(user_data)->reasons[image_index] = e.what();
+  }
+  return true;
 }
 
 }  // namespace glint

@@ -11,6 +11,7 @@
 
 #include <tiny_gltf.h>
 
+#include <map>
 #include <string>
 
 namespace glint {
@@ -26,5 +27,17 @@ Material convert_gltf_material(const tinygltf::Material& material, int index);
 // An image tinygltf decoded (any of 1-4 channels, 8 or 16 bits) as 8-bit RGBA, top row first. Throws
 // a glint::Error (prefixed with `where`) when the image has no pixels, e.g. a missing external file.
 Texture convert_gltf_image(const tinygltf::Image& image, const std::string& name, const std::string& where);
+
+// Decoding of glTF images, installed with tinygltf::TinyGLTF::SetImageLoader in place of tinygltf's
+// own stb call, so that glTF images get the same size limit and messages as texture files
+// (texture_io's decode_texture): an image that cannot be decoded is left empty (the material stays
+// untextured, with a warning) and its reason recorded here, by image index.
+struct GltfImageFailures {
+  std::map<int, std::string> reasons;
+};
+// A tinygltf::LoadImageDataFunction; `user_data` is a GltfImageFailures. Always returns true: a bad
+// image is a warning, not a reason to refuse the whole file.
+bool decode_gltf_image(tinygltf::Image* image, int image_index, std::string* error, std::string* warning,
+                       int required_width, int required_height, const unsigned char* bytes, int size, void* user_data);
 
 }  // namespace glint

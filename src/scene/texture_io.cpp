@@ -2,12 +2,17 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/untrusted_text.h"
 
 #include <stb/stb_image.h>
 
+#include <algorithm>
 #include <cstring>
+#include <fstream>
+#include <limits>
 #include <memory>
 #include <system_error>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -18,32 +23,92 @@ Texture checker_standing_in_for(const std::filesystem::path& path) {
   return texture;
 }
 
+bool starts_with(std::span<const unsigned char> bytes, std::string_view magic) {
+  return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin(),
+                                                    [](char m, unsigned char b) { return static_cast<unsigned char>(m) == b; });
+}
+
+// The format the first bytes announce, for messages ("image" when they announce none: TGA has no
+// signature).
+std::string_view format_name(std::span<const unsigned char> bytes) {
+  if (starts_with(bytes, "\x89PNG")) return "PNG";
+  if (starts_with(bytes, "\xFF\xD8")) return "JPEG";
+  if (starts_with(bytes, "BM")) return "BMP";
+  if (starts_with(bytes, "GIF8")) return "GIF";
+  if (starts_with(bytes, "8BPS")) return "PSD";
+  if (starts_with(bytes, "#?RADIANCE") || starts_with(bytes, "#?RGBE")) return "HDR";
+  return "image";
+}
+
+// stb_image's reason, which is short and sometimes empty or about another format than the file's.
+std::string stb_reason() {
+  const char* reason = stbi_failure_reason();
+  return reason != nullptr && *reason != '\0' ? fmt::format(" (stb_image: {})", reason) : std::string();
+}
+
+std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) fail("cannot open the file");
+  std::vector<unsigned char> bytes;
+  file.seekg(0, std::ios::end);
+  const std::streamoff size = file.tellg();
+  file.seekg(0);
+  if (size < 0) fail("cannot read the file");
+  bytes.resize(static_cast<std::size_t>(size));
+  if (!file.read(reinterpret_cast<char*>(bytes.data()), size)) fail("cannot read the file");
+  return bytes;
+}
+
 }  // namespace
+
+Texture decode_texture(std::span<const unsigned char> encoded, const std::string& name) {
+  if (encoded.empty()) fail("the file is empty");
+  // stb takes the size as an int; a larger buffer cannot hold an image glint accepts anyway.
+  if (encoded.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    fail("{} bytes is more than any texture within glint's limit", encoded.size());
+  const std::string_view format = format_name(encoded);
+  const int size = static_cast<int>(encoded.size());
+  int width = 0, height = 0, channels_in_file = 0;
+  if (stbi_info_from_memory(encoded.data(), size, &width, &height, &channels_in_file) == 0) {
+    if (format == "image")
+      fail("not an image glint can read (PNG, JPEG, TGA, BMP, GIF, PSD, HDR, PIC or PNM){}", stb_reason());
+    fail("the {} header is damaged or uses a variant glint cannot read{}", format, stb_reason());
+  }
+  const std::uint64_t texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (width <= 0 || height <= 0 || texels > kMaxTextureTexels)
+    fail("the {} header declares {} x {} texels, more than glint's limit of {} texels (16384 x 16384)", format,
+         width, height, kMaxTextureTexels);
+  // stb's flip flag is process-wide state; pin it for this thread so that rows always come top row
+  // first, the convention of scene.h, whatever another caller set.
+  stbi_set_flip_vertically_on_load_thread(0);
+  int decoded_width = 0, decoded_height = 0;
+  const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+      stbi_load_from_memory(encoded.data(), size, &decoded_width, &decoded_height, &channels_in_file, 4),
+      &stbi_image_free);
+  if (!pixels) fail("the {} data is damaged or uses a variant glint cannot read{}", format, stb_reason());
+  if (decoded_width != width || decoded_height != height)  // the header was read twice: never expected to differ
+    fail("the {} decoded as {} x {} texels, but its header says {} x {}", format, decoded_width, decoded_height, width, height);
+  Texture texture;
+  texture.name = name;
+  texture.width = width;
+  texture.height = height;
+  texture.rgba.assign(pixels.get(), pixels.get() + texels * 4);
+  return texture;
+}
 
 Texture load_texture_or_placeholder(const std::filesystem::path& path, std::string_view referenced_by) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error)) {
-    log_warning("{}: texture '{}' not found; using a checker placeholder", referenced_by, path.string());
+    log_warning("{}: texture '{}' not found; using a checker placeholder", referenced_by, untrusted_text(path.string()));
     return checker_standing_in_for(path);
   }
-  // stb's flip flag is process-wide state; pin it for this thread so that rows always come top row
-  // first, the convention of scene.h, whatever another caller set.
-  stbi_set_flip_vertically_on_load_thread(0);
-  int width = 0, height = 0, channels_in_file = 0;
-  const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
-      stbi_load(path.c_str(), &width, &height, &channels_in_file, 4), &stbi_image_free);
-  if (!pixels) {
-    log_warning("{}: texture '{}' cannot be read ({}); using a checker placeholder", referenced_by, path.string(),
-                stbi_failure_reason());
+  try {
+    return decode_texture(read_file_bytes(path), path.string());
+  } catch (const Error& e) {
+    log_warning("{}: texture '{}' cannot be read: {}; using a checker placeholder", referenced_by,
+                untrusted_text(path.string()), e.what());
     return checker_standing_in_for(path);
   }
-  Texture texture;
-  texture.name = path.string();
-  texture.width = width;
-  texture.height = height;
-  const std::size_t bytes = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4;
-  texture.rgba.assign(pixels.get(), pixels.get() + bytes);
-  return texture;
 }
 
 Texture make_checker_texture(int size, int square) {

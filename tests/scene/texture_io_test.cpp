@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/crafted_images.h"
 #include "scene/png_writer.h"
 #include "support/temp_folder.h"
 
@@ -71,6 +72,54 @@ TEST(TextureIo, UndecodableFileGivesCheckerAndWarning) {
   EXPECT_TRUE(texture.placeholder);
   EXPECT_EQ(capture.count_warnings("cannot be read"), 1);
   EXPECT_EQ(capture.count_warnings("walls.mtl:3"), 1);
+}
+
+TEST(TextureIo, ATinyJpegDeclaringAHugeImageIsRefusedFromItsHeader) {
+  // 248 bytes that declare 20000 x 20000: glint allocated 1.6 GB (3.1 GB in all) before finding the
+  // data short. The limit is read from the header, before decoding, the same for every format.
+  TempFolder folder;
+  const std::filesystem::path jpeg = folder.write("huge.jpg", testing::jpeg_declaring(20000, 20000));
+  ScopedLogCapture capture;
+  EXPECT_TRUE(load_texture_or_placeholder(jpeg, "walls.mtl:7").placeholder);
+  EXPECT_EQ(capture.count_warnings("walls.mtl:7: texture '" + jpeg.string() + "' cannot be read: the JPEG header "
+                                   "declares 20000 x 20000 texels, more than glint's limit of 268435456 texels"),
+            1);
+  // The same limit for a PNG: an RGB one of 20000 x 14000 passes stb_image's own PNG bound (2^30
+  // bytes of 3 channels) but not glint's (its IHDR patched; stb_image does not check PNG CRCs).
+  std::vector<std::uint8_t> png;
+  const std::vector<std::uint8_t> rgb(2 * 2 * 3, 200);
+  stbi_write_png_to_func([](void* out, void* data, int size) {
+    auto* bytes = static_cast<std::uint8_t*>(data);
+    static_cast<std::vector<std::uint8_t>*>(out)->insert(static_cast<std::vector<std::uint8_t>*>(out)->end(), bytes, bytes + size);
+  }, &png, 2, 2, 3, rgb.data(), 6);
+  const auto put_be32 = [&png](std::size_t at, std::uint32_t value) {
+    for (std::size_t i = 0; i < 4; ++i) png[at + i] = static_cast<std::uint8_t>(value >> (24 - 8 * i));
+  };
+  put_be32(16, 20000);  // IHDR width, after the 8-byte signature and the chunk's length and type
+  put_be32(20, 14000);  // IHDR height
+  EXPECT_TRUE(load_texture_or_placeholder(folder.write("huge.png", png), "walls.mtl:8").placeholder);
+  EXPECT_EQ(capture.count_warnings("the PNG header declares 20000 x 14000 texels, more than glint's limit"), 1);
+}
+
+TEST(TextureIo, WarningsGiveAReadableReasonForTheFilesFormat) {
+  TempFolder folder;
+  std::vector<std::uint8_t> damaged = testing::jpeg_declaring(8, 8);
+  damaged.resize(damaged.size() / 2);  // the entropy-coded data cut short
+  ScopedLogCapture capture;
+  load_texture_or_placeholder(folder.write("cut.jpg", damaged), "a.mtl:1");
+  load_texture_or_placeholder(folder.write("text.png", "not an image at all"), "a.mtl:2");
+  load_texture_or_placeholder(folder.write("empty.png", ""), "a.mtl:3");
+  ASSERT_EQ(capture.entries().size(), 3u);
+  EXPECT_NE(capture.entries()[0].message.find("cut.jpg' cannot be read: the JPEG data is damaged"), std::string::npos)
+      << capture.entries()[0].message;
+  EXPECT_NE(capture.entries()[1].message.find("text.png' cannot be read: not an image glint can read"), std::string::npos)
+      << capture.entries()[1].message;
+  EXPECT_NE(capture.entries()[2].message.find("empty.png' cannot be read: the file is empty"), std::string::npos)
+      << capture.entries()[2].message;
+  for (const auto& entry : capture.entries()) {
+    EXPECT_EQ(entry.message.find("bad png sig"), std::string::npos) << entry.message;
+    EXPECT_EQ(entry.message.find("()"), std::string::npos) << entry.message;
+  }
 }
 
 TEST(TextureIo, CheckerAlternatesMagentaAndBlackSquares) {
