@@ -6,6 +6,7 @@
 #include "app/accel_bench/report_json.h"
 #include "app/accel_bench/report_table.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "scene/load_scene.h"
 
 #include <fmt/format.h>
@@ -140,6 +141,28 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   bench->add_option("--seed", options.seed, "Seed of the random rays")->capture_default_str();
+  bench->add_flag("--strict-hits", options.strict_hits,
+                  "Fail the run when any structure's hits disagree with the reference's (beyond float precision at "
+                  "the hit, docs/accel-bench.md): the table and the JSON are still written, then the exit status is " +
+                      std::to_string(kHitDisagreementExitCode) +
+                      ". Without it disagreements are counted (column 'disagree', JSON 'disagreements'), reported "
+                      "as warnings, and the exit status is 0");
+}
+
+int hit_check_exit_code(const accel_bench::BenchReport& report, bool strict_hits) {
+  const std::vector<std::string> problems = accel_bench::hit_problems(report);
+  for (const std::string& problem : problems)
+    log_message(strict_hits ? LogLevel::error : LogLevel::warning, fmt::format("accel-bench: {}", problem));
+  if (problems.empty()) return 0;
+  if (!strict_hits) {
+    log_warning("accel-bench: {} hit check(s) failed; the results are written (--strict-hits makes this an error)",
+                problems.size());
+    return 0;
+  }
+  log_message(LogLevel::error, fmt::format("accel-bench: {} hit check(s) failed under --strict-hits; the results are "
+                                           "written, exit status {}",
+                                           problems.size(), kHitDisagreementExitCode));
+  return kHitDisagreementExitCode;
 }
 
 int run_accel_bench_command(const AccelBenchOptions& options) {
@@ -157,12 +180,15 @@ int run_accel_bench_command(const AccelBenchOptions& options) {
   bench.seed = options.seed;
   bench.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
 
+  // A bad --json path is found now, not after minutes of building and tracing.
+  if (!options.json.empty()) accel_bench::check_json_path(options.json);
   Scene scene = load_scene(options.scene);
   const accel_bench::BenchReport report = accel_bench::run_accel_bench(scene, bench);
   fmt::print("{}", accel_bench::format_report_table(report));
+  std::fflush(stdout);  // the table before the verdict's lines on stderr
   if (!options.json.empty())
     accel_bench::write_json_atomically(options.json, accel_bench::report_json(report, accel_bench::current_machine(threads)));
-  return 0;
+  return hit_check_exit_code(report, options.strict_hits);
 }
 
 }  // namespace glint

@@ -22,7 +22,12 @@ struct AccelBenchOptions {
   int deform_frames = 100;
   int build_runs = 3;
   unsigned seed = 1;
+  bool strict_hits = false;           // any disagreeing hit fails the run (exit kHitDisagreementExitCode)
 };
+
+// The exit status of an accel-bench run under --strict-hits whose structures disagree (after the
+// table and the JSON are written); 1 stays "could not run" (glint::Error), 2 a bad flag.
+inline constexpr int kHitDisagreementExitCode = 3;
 
 void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options);
 int run_accel_bench_command(const AccelBenchOptions& options);
@@ -32,5 +37,12 @@ int run_accel_bench_command(const AccelBenchOptions& options);
 // "all" is every structure of `backend`: "cpu" (glint's CPU structures), "cuda" (cuda-*) or "optix" (optix-*).
 std::vector<std::string> parse_structure_list(const std::string& text, const std::string& backend = "cpu");
 std::vector<int> parse_frame_list(const std::string& text);
+
+namespace accel_bench {
+struct BenchReport;
+}
+// The run's verdict on its hit checks: every line of hit_problems(report) goes to stderr, as a
+// warning (and 0 is returned) or, when `strict_hits`, as an error (and kHitDisagreementExitCode).
+int hit_check_exit_code(const accel_bench::BenchReport& report, bool strict_hits);
 
 }  // namespace glint

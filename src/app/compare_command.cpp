@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -81,6 +82,22 @@ void print_table(const metrics::ImageComparison& c, const std::string& test, con
              psnr_text(e.channel_psnr[2]), psnr_text(e.psnr));
 }
 
+// --heatmap-scale is a luma difference: finite, > 0 (it divides) and at most 255 (the largest
+// difference of 8-bit lumas). Checked at parse time so that 0, nan or inf are a bad flag (exit 2) in
+// one line, rather than CLI11's range text with DBL_MAX written out, or a late error (exit 1).
+CLI::Validator heatmap_scale_check() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(value) ||
+            !(value > 0.0 && value <= 255.0))
+          return fmt::format("must be a number > 0 and <= 255 (the luma difference shown as white), not '{}'", text);
+        return {};
+      },
+      "SCALE in (0, 255]");
+}
+
 }  // namespace
 
 void add_compare_command(CLI::App& app, CompareOptions& options) {
@@ -93,7 +110,7 @@ void add_compare_command(CLI::App& app, CompareOptions& options) {
       ->capture_default_str();
   compare->add_option("--heatmap", options.heatmap, "Write a PNG of the per-pixel luma error (black, red, yellow, white)");
   compare->add_option("--heatmap-scale", options.heatmap_scale, "Luma difference (0..255) shown as white in the heat map")
-      ->check(CLI::PositiveNumber)
+      ->check(heatmap_scale_check())
       ->capture_default_str();
   compare->add_option("--json", options.json, "Also write the numbers as JSON to this file (PSNR of identical images: \"inf\")");
 }

@@ -175,6 +175,30 @@ TEST(CompareCli, UnwritableJsonFolderIsAnErrorAndLeavesNoFile) {
   EXPECT_FALSE(fs::exists(json));
 }
 
+// --heatmap-scale is checked when the flags are parsed: 0 used to print CLI11's range with DBL_MAX
+// written out (309 digits), nan passed and failed later with exit code 1.
+TEST(CompareCli, HeatmapScaleOutsideZeroTo255IsAOneLineUsageError) {
+  const TempFolder folder;
+  const ImagePair pair = write_pair(folder);
+  const fs::path heatmap = folder.path() / "heat.png";
+  for (const char* bad : {"0", "nan", "-nan", "inf", "-1", "255.5", "1e300", "12abc", ""}) {
+    const CliResult r = run_glint(args({"compare", quoted(pair.test), quoted(pair.reference), "--heatmap",
+                                        quoted(heatmap), "--heatmap-scale", std::string("\"") + bad + "\""}));
+    EXPECT_EQ(r.exit_code, 2) << bad << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << r.out;
+    const std::string first_line = r.err.substr(0, r.err.find('\n'));
+    EXPECT_NE(first_line.find("--heatmap-scale: must be a number > 0 and <= 255"), std::string::npos) << r.err;
+    EXPECT_LT(first_line.size(), 120u) << first_line;
+    EXPECT_LE(line_count(r.err), 2) << r.err;  // the reason, and CLI11's pointer to --help
+    EXPECT_FALSE(fs::exists(heatmap)) << bad;
+  }
+  for (const char* good : {"255", "0.5", "1e-3"}) {
+    const CliResult r = run_glint(args({"compare", quoted(pair.test), quoted(pair.reference), "--heatmap",
+                                        quoted(heatmap), "--heatmap-scale", good}));
+    EXPECT_EQ(r.exit_code, 0) << good << "\n" << r.err;
+  }
+}
+
 TEST(CompareCli, BadFlagsAreUsageErrorsWithExitCode2) {
   const TempFolder folder;
   const ImagePair pair = write_pair(folder);

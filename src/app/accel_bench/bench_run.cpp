@@ -71,8 +71,10 @@ double seconds_of(const std::function<void()>& work) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& menu, const accel::TriangleMesh& mesh,
+void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& menu, const rt::SceneGeometry& geometry,
                 std::span<const accel::Ray> rays, BenchReport& report) {
+  const accel::TriangleMesh mesh = geometry.mesh();
+  const float scene_magnitude = coordinate_magnitude(geometry.bounds());
   std::vector<accel::Hit> reference_hits, hits(rays.size());
   for (const std::string& name : options.structures) {
     report_progress(options, fmt::format("accel-bench: {}: building over {} triangles", name, mesh.triangle_count));
@@ -106,15 +108,22 @@ void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& 
       reference_hits = hits;
       report.ray_hits = static_cast<size_t>(std::count_if(hits.begin(), hits.end(), [](const accel::Hit& h) { return h.valid(); }));
     } else {
-      result.edge_grazes = check_hits(name, report.reference, rays, reference_hits, hits);
+      const HitCheck check = check_hits(name, report.reference, rays, reference_hits, hits, scene_magnitude);
+      result.disagreements = check.disagreements;
+      result.edge_grazes = check.edge_grazes;
+      result.hit_problem = check.problem;
     }
     double best = std::numeric_limits<double>::infinity();
     for (int run = 0; run < options.timed_runs; ++run)
       best = std::min(best, candidate.trace_closest_timed ? candidate.trace_closest_timed(rays, hits)
                                                           : seconds_of([&] { candidate.trace_closest(rays, hits); }));
     result.mrays_per_s = best > 0.0 ? static_cast<double>(rays.size()) / best * 1e-6 : 0.0;
-    report_progress(options, fmt::format("accel-bench: {}: built in {:.1f} ms, {:.2f} Mrays/s", name, result.build_ms,
-                                         *result.mrays_per_s));
+    report_progress(options, fmt::format("accel-bench: {}: built in {:.1f} ms, {:.2f} Mrays/s{}", name, result.build_ms,
+                                         *result.mrays_per_s,
+                                         result.disagreements != 0
+                                             ? fmt::format(", {} rays disagree with {}", result.disagreements,
+                                                           report.reference)
+                                             : std::string()));
     report.structures.push_back(result);
   }
   const auto medium = std::find_if(report.structures.begin(), report.structures.end(),
@@ -165,7 +174,8 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
     }
   }
   // The refitted structures must still find what the rebuilt ones find.
-  const std::vector<accel::Ray> rays = random_rays(geometry.bounds(), 20000, options.seed + 1);
+  const Aabb bounds = geometry.bounds();
+  const std::vector<accel::Ray> rays = random_rays(bounds, 20000, options.seed + 1);
   std::vector<accel::Hit> refit_hits(rays.size()), rebuild_hits(rays.size());
   for (Pair& pair : pairs) {
     DeformResult& result = pair.result;
@@ -176,7 +186,10 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
       if (!pair.refitted.brute_force || work <= options.brute_force_limit) {
         pair.refitted.trace_closest(rays, refit_hits);
         pair.rebuilt.trace_closest(rays, rebuild_hits);
-        (void)check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits, refit_hits);
+        const HitCheck check = check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits,
+                                          refit_hits, coordinate_magnitude(bounds));
+        result.disagreements = check.disagreements;
+        result.hit_problem = check.problem;
       }
       const auto refit_sah = pair.refitted.stats().sah, rebuild_sah = pair.rebuilt.stats().sah;
       if (refit_sah && rebuild_sah && *rebuild_sah > 0.0) result.sah_drift = *refit_sah / *rebuild_sah;
@@ -236,10 +249,19 @@ BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
     report.ray_count = rays.size();
     report_progress(options, fmt::format("accel-bench: {} {} rays over {} triangles", rays.size(),
                                          ray_kind_name(options.rays), geometry.triangle_count()));
-    run_static(options, menu, geometry.mesh(), rays, report);
+    run_static(options, menu, geometry, rays, report);
   }
   run_deform(scene, options, menu, report);
   return report;
+}
+
+std::vector<std::string> hit_problems(const BenchReport& report) {
+  std::vector<std::string> problems;
+  for (const StructureResult& result : report.structures)
+    if (!result.hit_problem.empty()) problems.push_back(result.hit_problem);
+  for (const DeformResult& result : report.deform)
+    if (!result.hit_problem.empty()) problems.push_back(result.hit_problem);
+  return problems;
 }
 
 }  // namespace glint::accel_bench

@@ -53,7 +53,10 @@ struct StructureResult {
   std::optional<double> mrays_per_s;    // best of timed_runs; nullopt when not traced
   std::optional<double> ratio_to_embree_medium;  // mrays_per_s / embree-medium's
   std::string skipped;                  // why it was not traced, when it was not
-  size_t edge_grazes = 0;               // rays disagreeing with the reference on an edge graze (hit_check.h)
+  // The check of its hits against the reference's (hit_check.h); all 0 and empty for the reference.
+  size_t disagreements = 0;             // rays whose hits disagree with the reference's
+  size_t edge_grazes = 0;               // rays disagreeing with the reference on an edge graze
+  std::string hit_problem;              // HitCheck::problem: empty when it agrees
 };
 
 struct DeformResult {
@@ -61,6 +64,10 @@ struct DeformResult {
   double rebuild_ms = 0.0;              // mean per frame
   std::optional<double> refit_ms;       // mean per frame; nullopt when the structure cannot refit
   std::optional<double> sah_drift;      // SAH(refitted) / SAH(rebuilt) after the last frame
+  // The refitted copy's hits checked against the rebuilt copy's after the last frame (hit_check.h);
+  // nullopt when not checked (the structure cannot refit, or brute force over too many rays).
+  std::optional<size_t> disagreements;
+  std::string hit_problem;              // HitCheck::problem: empty when they agree
 };
 
 struct BenchReport {
@@ -85,7 +92,12 @@ struct BenchReport {
 
 // Runs the benchmark. `scene` is deformed in place by the deformation part (its deformable meshes
 // end posed at the last frame). glint::Error for an unknown structure, a frame outside the
-// walkthrough, no rays to trace, or a structure whose hits disagree with the reference's.
+// walkthrough or no rays to trace. Hits that disagree are not errors: they are counted in the
+// report (hit_problems), and the run goes on.
 BenchReport run_accel_bench(Scene& scene, const BenchOptions& options);
+
+// One line per check that failed, in the report's order: a structure that disagrees with the
+// reference, or a refitted structure that disagrees with its rebuilt copy (HitCheck::problem).
+std::vector<std::string> hit_problems(const BenchReport& report);
 
 }  // namespace glint::accel_bench

@@ -5,28 +5,40 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace glint::accel_bench {
-
-std::optional<std::string> hit_disagreement(const accel::Hit& reference, const accel::Hit& actual) {
-  if (reference.valid() != actual.valid())
-    return reference.valid() ? fmt::format("missed, the reference hits triangle {} at t {}", reference.prim, reference.t)
-                             : fmt::format("hit triangle {} at t {}, the reference misses", actual.prim, actual.t);
-  if (!reference.valid()) return std::nullopt;
-  // Relative to the larger t, with a floor so hits right at the origin compare by absolute error.
-  const float scale = std::max({std::abs(reference.t), std::abs(actual.t), 1e-3f});
-  if (std::abs(reference.t - actual.t) > kHitRelativeTolerance * scale)
-    return fmt::format("hit triangle {} at t {}, the reference hits triangle {} at t {}", actual.prim, actual.t,
-                       reference.prim, reference.t);
-  return std::nullopt;
-}
-
 namespace {
+
+float max_abs(const vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 
 float edge_distance(const accel::Hit& hit) { return std::min({hit.u, hit.v, 1.0f - hit.u - hit.v}); }
 
 }  // namespace
+
+float coordinate_magnitude(const Aabb& bounds) {
+  return bounds.empty() ? 0.0f : std::max(max_abs(bounds.min), max_abs(bounds.max));
+}
+
+float hit_t_tolerance(const accel::Ray& ray, float scene_magnitude) {
+  const float magnitude = std::max(scene_magnitude, max_abs(ray.origin));
+  return kHitToleranceUlps * FLT_EPSILON * magnitude / glm::length(ray.direction);
+}
+
+std::optional<std::string> hit_disagreement(const accel::Ray& ray, const accel::Hit& reference, const accel::Hit& actual,
+                                            float scene_magnitude) {
+  if (reference.valid() != actual.valid())
+    return reference.valid() ? fmt::format("missed, the reference hits triangle {} at t {}", reference.prim, reference.t)
+                             : fmt::format("hit triangle {} at t {}, the reference misses", actual.prim, actual.t);
+  if (!reference.valid()) return std::nullopt;
+  // The same rule for the same triangle and for another one (a tie): either may be right.
+  const float tolerance = hit_t_tolerance(ray, scene_magnitude);
+  if (std::abs(reference.t - actual.t) > tolerance)
+    return fmt::format("hit triangle {} at t {}, the reference hits triangle {} at t {} (more than {:.3g} apart)",
+                       actual.prim, actual.t, reference.prim, reference.t, tolerance);
+  return std::nullopt;
+}
 
 bool is_edge_graze(const accel::Hit& reference, const accel::Hit& actual) {
   // The hit the other one missed is the nearer one (or the only one).
@@ -36,29 +48,34 @@ bool is_edge_graze(const accel::Hit& reference, const accel::Hit& actual) {
   return missed != nullptr && edge_distance(*missed) < kEdgeGrazeBarycentric;
 }
 
-size_t check_hits(std::string_view structure, std::string_view reference, std::span<const accel::Ray> rays,
-                  std::span<const accel::Hit> reference_hits, std::span<const accel::Hit> hits) {
+HitCheck check_hits(std::string_view structure, std::string_view reference, std::span<const accel::Ray> rays,
+                    std::span<const accel::Hit> reference_hits, std::span<const accel::Hit> hits, float scene_magnitude) {
   if (rays.size() != reference_hits.size() || rays.size() != hits.size())
     fail("accel-bench: {} rays, {} hits of {}, {} hits of {}", rays.size(), reference_hits.size(), reference,
          hits.size(), structure);
-  size_t grazes = 0;
+  HitCheck check;
+  std::string first;
   for (size_t i = 0; i < rays.size(); ++i) {
-    if (const auto why = hit_disagreement(reference_hits[i], hits[i])) {
-      if (is_edge_graze(reference_hits[i], hits[i])) {
-        ++grazes;
-        continue;
-      }
+    const std::optional<std::string> why = hit_disagreement(rays[i], reference_hits[i], hits[i], scene_magnitude);
+    if (!why) continue;
+    if (is_edge_graze(reference_hits[i], hits[i])) {
+      ++check.edge_grazes;
+      continue;
+    }
+    if (check.disagreements++ == 0) {
       const accel::Ray& ray = rays[i];
-      fail("accel-bench: {} disagrees with {} on ray {} (origin ({}, {}, {}), direction ({}, {}, {})): {}", structure,
-           reference, i, ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z,
-           *why);
+      first = fmt::format("ray {} (origin ({}, {}, {}), direction ({}, {}, {})): {}", i, ray.origin.x, ray.origin.y,
+                          ray.origin.z, ray.direction.x, ray.direction.y, ray.direction.z, *why);
     }
   }
-  if (static_cast<double>(grazes) > kMaxEdgeGrazeFraction * static_cast<double>(rays.size()))
-    fail("accel-bench: {} disagrees with {} on {} of {} rays, each an edge-grazing hit (barycentric < {}): more than "
-         "the {} allowed",
-         structure, reference, grazes, rays.size(), kEdgeGrazeBarycentric, kMaxEdgeGrazeFraction);
-  return grazes;
+  if (check.disagreements != 0)
+    check.problem = fmt::format("{} disagrees with {} on {} of {} rays; first: {}", structure, reference,
+                                check.disagreements, rays.size(), first);
+  else if (static_cast<double>(check.edge_grazes) > kMaxEdgeGrazeFraction * static_cast<double>(rays.size()))
+    check.problem = fmt::format(
+        "{} disagrees with {} on {} of {} rays, each an edge-grazing hit (barycentric < {}): more than the {} allowed",
+        structure, reference, check.edge_grazes, rays.size(), kEdgeGrazeBarycentric, kMaxEdgeGrazeFraction);
+  return check;
 }
 
 }  // namespace glint::accel_bench

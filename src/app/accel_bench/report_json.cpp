@@ -57,7 +57,9 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
                           {"mrays_per_s", or_null(r.mrays_per_s)},
                           {"ratio_to_embree_medium", or_null(r.ratio_to_embree_medium)}};
     if (!r.skipped.empty()) row["not_traced"] = r.skipped;
+    row["disagreements"] = r.disagreements;
     row["edge_grazes"] = r.edge_grazes;
+    row["disagreement"] = r.hit_problem.empty() ? nlohmann::json(nullptr) : nlohmann::json(r.hit_problem);
     j["structures"].push_back(row);
   }
   j["deformation"] = {{"meshes", report.deformable_meshes},
@@ -68,12 +70,21 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
     j["deformation"]["structures"].push_back({{"name", d.name},
                                               {"rebuild_ms", d.rebuild_ms},
                                               {"refit_ms", or_null(d.refit_ms)},
-                                              {"sah_drift", or_null(d.sah_drift)}});
+                                              {"sah_drift", or_null(d.sah_drift)},
+                                              {"disagreements", or_null(d.disagreements)},
+                                              {"disagreement", d.hit_problem.empty() ? nlohmann::json(nullptr)
+                                                                                     : nlohmann::json(d.hit_problem)}});
   return j;
 }
 
 void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json) {
   write_file_atomically(path, json.dump(2) + "\n");
+}
+
+void check_json_path(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) fail("cannot write '{}': it is a folder", path.string());
+  const AtomicFileWriter probe(path);  // its temporary is removed again, uncommitted, when it goes
 }
 
 }  // namespace glint::accel_bench

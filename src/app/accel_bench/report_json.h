@@ -24,4 +24,9 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
 // never sees half a file. glint::Error naming the path when it cannot be written.
 void write_json_atomically(const std::filesystem::path& path, const nlohmann::json& json);
 
+// Fails at once where write_json_atomically(path, ...) would fail at the end of a long run: `path`
+// is a folder, its folder is missing or is a file, or no file can be created in it (a temporary is
+// created there and removed). glint::Error naming the path.
+void check_json_path(const std::filesystem::path& path);
+
 }  // namespace glint::accel_bench
