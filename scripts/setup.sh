@@ -15,6 +15,9 @@ packages=(
   libglfw3-dev libimgui-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # fuzzing (preset fuzz): clang with libFuzzer and its sanitizer runtimes (libclang-rt-dev); the
+  # asan preset uses gcc's own (libasan8, libubsan1, part of build-essential)
+  clang libclang-rt-dev
   # runtime tools: video encoding, plots, a virtual display for the viewer
   ffmpeg python3 python3-matplotlib xvfb
 )
