@@ -59,6 +59,7 @@ nlohmann::json scene_json(const Scene& scene) {
   j["walkthrough"] = {{"frames", scene.walkthrough.frame_count},
                       {"fps", scene.walkthrough.frames_per_second},
                       {"camera_points", scene.walkthrough.camera.points.size()},
+                      {"camera_fixed", scene.walkthrough.camera.is_fixed()},
                       {"camera_path_length", animation.camera_path_length()},
                       {"light_points", scene.walkthrough.light.points.size()},
                       {"light_path_length", animation.light_path_length()},
@@ -97,9 +98,13 @@ void print_text(const Scene& scene) {
   const Walkthrough& walk = scene.walkthrough;
   fmt::print("walkthrough {} frames at {:.0f} fps ({:.1f} s)\n", walk.frame_count, walk.frames_per_second,
              static_cast<float>(walk.frame_count) / walk.frames_per_second);
-  fmt::print("  camera    {} control points, path length {:.1f} m, {:.3f} m per frame, fov {:.0f} deg\n",
-             walk.camera.points.size(), animation.camera_path_length(), animation.camera_speed_per_frame(),
-             walk.camera.fov_y_degrees);
+  if (walk.camera.is_fixed())
+    fmt::print("  camera    fixed at {} looking at {}, fov {:.0f} deg\n", vec_text(walk.camera.points.front()),
+               vec_text(walk.camera.targets.front()), walk.camera.fov_y_degrees);
+  else
+    fmt::print("  camera    {} control points, path length {:.1f} m, {:.3f} m per frame, fov {:.0f} deg\n",
+               walk.camera.points.size(), animation.camera_path_length(), animation.camera_speed_per_frame(),
+               walk.camera.fov_y_degrees);
   fmt::print("  light     {} points, path length {:.1f} m, there and back every {} frames\n", walk.light.points.size(),
              animation.light_path_length(), walk.light.period_frames);
 }
@@ -111,7 +116,11 @@ void add_info_command(CLI::App& app, InfoOptions& options) {
   info->add_option("scene", options.scene, "Preset (atrium, atrium-simple, sponza) or file (.obj, .gltf, .glb, .scene.json)")
       ->capture_default_str();
   info->add_flag("--json", options.json, "Print JSON instead of text");
-  info->add_flag("--flat-normals", options.flat_normals, "Compute flat instead of smooth normals where a mesh has none");
+  add_flat_normals_flag(*info, options.flat_normals);
+}
+
+void add_flat_normals_flag(CLI::App& command, bool& flat_normals) {
+  command.add_flag("--flat-normals", flat_normals, "Compute flat instead of smooth normals where a mesh has none");
 }
 
 int run_info_command(const InfoOptions& options) {

@@ -14,6 +14,8 @@ struct InfoOptions {
 };
 
 void add_info_command(CLI::App& app, InfoOptions& options);
+// --flat-normals (LoadOptions::flat_normals), the same flag for `info` and `render`.
+void add_flat_normals_flag(CLI::App& command, bool& flat_normals);
 int run_info_command(const InfoOptions& options);
 
 }  // namespace glint

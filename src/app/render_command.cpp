@@ -2,6 +2,7 @@
 
 #include "app/frame_loop.h"
 #include "app/frame_selection.h"
+#include "app/info_command.h"
 #include "app/output_folder.h"
 #include "app/render_run_record.h"
 #include "app/video_writer.h"
@@ -17,7 +18,13 @@
 #include "scene/camera_path.h"
 #include "scene/load_scene.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <charconv>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -87,6 +94,55 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
 }
 
 
+std::vector<int> preview_frames(int frame_count) {
+  std::vector<int> frames;
+  if (frame_count <= kPreviewFrames) {
+    for (int frame = 0; frame < frame_count; ++frame) frames.push_back(frame);
+    return frames;
+  }
+  // Rounded i * (last / (k - 1)): the first and the last frame, the rest evenly between, all distinct
+  // (the spacing is at least 1 frame).
+  const long long last = frame_count - 1, gaps = kPreviewFrames - 1;
+  for (long long i = 0; i < kPreviewFrames; ++i) frames.push_back(static_cast<int>((i * last + gaps / 2) / gaps));
+  return frames;
+}
+
+namespace {
+
+// Why `text` is not "x,y,z" ("\"<text>\": expected ..."), or empty when it is one, then in `point`.
+std::string point_text_problem(std::string_view text, vec3& point) {
+  float values[3] = {0.0f, 0.0f, 0.0f};
+  int count = 0;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', begin);
+    std::string_view part = text.substr(begin, comma == std::string_view::npos ? std::string_view::npos : comma - begin);
+    while (!part.empty() && (part.front() == ' ' || part.front() == '\t')) part.remove_prefix(1);
+    while (!part.empty() && (part.back() == ' ' || part.back() == '\t')) part.remove_suffix(1);
+    float value = 0.0f;
+    const auto [stop, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (count == 3 || part.empty() || error != std::errc() || stop != part.data() + part.size() || !std::isfinite(value))
+      break;
+    values[count++] = value;
+    if (comma == std::string_view::npos) {
+      if (count != 3) break;
+      point = vec3(values[0], values[1], values[2]);
+      return {};
+    }
+    begin = comma + 1;
+  }
+  return fmt::format("\"{}\": expected x,y,z (three finite numbers separated by commas)", text);
+}
+
+}  // namespace
+
+vec3 parse_point_flag(std::string_view flag, std::string_view text) {
+  vec3 point(0.0f);
+  const std::string problem = point_text_problem(text, point);
+  if (!problem.empty()) fail("{} {}", flag, problem);
+  return point;
+}
+
 bool deforms_on_gpu(const RenderOptions& options) {
   return options.deform_on.empty() ? rt::is_gpu_backend(options.backend) : options.deform_on == "gpu";
 }
@@ -127,9 +183,29 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   command->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
-  command->add_option("--frames", options.frames,
-                      "Frames to render: N, A:B (inclusive), A:B:step, or a comma list such as 1800,2100,2300,4400; "
-                      "default: the whole walkthrough");
+  command
+      ->add_option("--frames", options.frames,
+                   "Frames to render: N, A:B (inclusive), A:B:step, a comma list such as 1800,2100,2300,4400, or all; "
+                   "default: a preview of " + std::to_string(kPreviewFrames) +
+                       " frames spread evenly from the walkthrough's first to its last")
+      ->check([](const std::string& text) {
+        return text.find_first_not_of(" \t") == std::string::npos
+                   ? std::string("empty value; give N, A:B, A:B:step, a comma list, or all")
+                   : std::string();
+      });
+  const auto point_check = [](const std::string& text) {
+    vec3 point(0.0f);
+    return point_text_problem(text, point);
+  };
+  CLI::Option* camera = command->add_option("--camera", options.camera,
+                                            "Fixed camera position x,y,z (with --target): every frame is seen from "
+                                            "there instead of along the walkthrough's camera path")
+                            ->check(point_check);
+  CLI::Option* target =
+      command->add_option("--target", options.target, "Point x,y,z the --camera looks at")->check(point_check);
+  camera->needs(target);
+  target->needs(camera);
+  add_flat_normals_flag(*command, options.flat_normals);
   command->add_option("--out", options.out, "Output folder (created if missing)")->capture_default_str();
   command->add_flag("--debug-views", options.debug_views,
                     "Also write albedo, normals, positions, depth, shadow mask, SSR reflection and failure mask per frame");
@@ -179,11 +255,38 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 
 int run_render_command(const RenderOptions& options) {
   const render::FramePipelineSettings settings = render_pipeline_settings(options);
-  const FrameSelection selection = options.frames.empty() ? FrameSelection::all() : FrameSelection::parse(options.frames);
+  // Checked before the scene is loaded, so that a typo costs no loading time. No --frames: a preview.
+  std::optional<FrameSelection> selection;
+  if (options.frames == "all") selection = FrameSelection::all();
+  else if (!options.frames.empty()) selection = FrameSelection::parse(options.frames);
+  std::optional<CameraPathSpec> fixed_camera;
+  if (!options.camera.empty() || !options.target.empty()) {
+    fixed_camera = CameraPathSpec::fixed(parse_point_flag("--camera", options.camera),
+                                         parse_point_flag("--target", options.target));
+    if (fixed_camera->points.front() == fixed_camera->targets.front())
+      fail("--camera {} and --target {} are the same point: the camera needs a point to look at", options.camera,
+           options.target);
+  }
 
-  Scene scene = load_scene(options.scene);
+  LoadOptions load;
+  load.flat_normals = options.flat_normals;
+  Scene scene = load_scene(options.scene, load);
+  if (fixed_camera) {
+    fixed_camera->fov_y_degrees = scene.walkthrough.camera.fov_y_degrees;
+    scene.walkthrough.camera = *fixed_camera;
+  }
   const WalkthroughAnimation animation(scene);
-  const std::vector<int> frames = selection.resolve(animation.frame_count());
+  const std::vector<int> frames =
+      selection ? selection->resolve(animation.frame_count()) : preview_frames(animation.frame_count());
+  RenderOptions recorded = options;  // run.json names the frames the run chose
+  if (!selection) {
+    recorded.frames = fmt::format("{}", fmt::join(frames, ","));
+    if (static_cast<int>(frames.size()) < animation.frame_count())
+      std::fprintf(stderr,
+                   "glint: no --frames: rendering a preview, %zu of the walkthrough's %d frames (%s); "
+                   "--frames all renders every frame\n",
+                   frames.size(), animation.frame_count(), recorded.frames.c_str());
+  }
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracing(settings.reflections)) {
@@ -198,7 +301,7 @@ int run_render_command(const RenderOptions& options) {
                  pass_timing_for_renderer(context.renderer()));
   render::FramePipeline& pipeline = loop.pipeline();
 
-  RenderRunRecord record(options, scene, context, loop.pass_timing(), frames);
+  RenderRunRecord record(recorded, scene, context, loop.pass_timing(), frames);
   if (pipeline.ray_tracer() != nullptr) record.set_ray_tracer(settings.ray_tracing, pipeline.ray_tracer()->stats());
   CsvWriter timings(out.path() / "timings.csv", RenderRunRecord::timings_header());
   std::optional<FfmpegVideoWriter> video;

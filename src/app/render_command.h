@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace glint {
 
@@ -20,7 +22,12 @@ struct RenderOptions {
   std::string update = "auto";         // deformed meshes' structures: rebuild|refit|auto
   int width = 1280;
   int height = 720;
-  std::string frames;             // FrameSelection text; empty = the whole walkthrough
+  // FrameSelection text, or "all"; empty (no --frames): a preview of kPreviewFrames frames spread over
+  // the walkthrough (preview_frames). `glint bench` ignores it.
+  std::string frames;
+  std::string camera;             // "x,y,z": a fixed camera there instead of the walkthrough's (with target)
+  std::string target;             // "x,y,z": what the fixed camera looks at (with camera)
+  bool flat_normals = false;      // LoadOptions::flat_normals
   std::string out = "render-out";
   bool debug_views = false;
   bool video = false;
@@ -46,6 +53,15 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
 
 // Whether the deformable meshes are posed on the GPU (--deform-on, resolved against --backend).
 bool deforms_on_gpu(const RenderOptions& options);
+
+// What `glint render` renders without --frames: kPreviewFrames frames spread evenly from the first
+// to the last frame of the walkthrough (all of them when it is that short), ascending.
+inline constexpr int kPreviewFrames = 8;
+std::vector<int> preview_frames(int frame_count);
+
+// "x,y,z" (three finite numbers, blanks allowed around them) -> the point; glint::Error naming `flag`
+// otherwise.
+vec3 parse_point_flag(std::string_view flag, std::string_view text);
 
 void add_render_command(CLI::App& app, RenderOptions& options);
 int run_render_command(const RenderOptions& options);

@@ -48,8 +48,23 @@ const Walkthrough& validated(const Walkthrough& w) {
   if (w.light.period_frames <= 0) fail("walkthrough: light.period_frames must be > 0, got {}", w.light.period_frames);
   if (!(w.camera.fov_y_degrees > 0.0f && w.camera.fov_y_degrees < 180.0f))
     fail("walkthrough: camera.fov_y_degrees must be in (0, 180), got {}", w.camera.fov_y_degrees);
-  if (w.camera.points.size() < 2)
-    fail("walkthrough: camera.points needs at least 2 points, got {}", w.camera.points.size());
+  if (w.camera.points.empty())
+    fail("walkthrough: camera.points is empty: give at least 2 points for a path, or 1 point and 1 target for a "
+         "fixed camera");
+  if (w.camera.is_fixed()) {
+    // One point: a camera that does not move. It has no path to look along, so it needs its target.
+    const vec3 position = w.camera.points.front();
+    if (!is_finite(position)) fail("walkthrough: camera.points: point 0 is not finite");
+    if (w.camera.targets.size() != 1)
+      fail("walkthrough: camera.points has 1 point, a fixed camera, which needs exactly 1 target in camera.targets "
+           "(got {}); give at least 2 points for a path",
+           w.camera.targets.size());
+    if (!is_finite(w.camera.targets.front())) fail("walkthrough: camera.targets: point 0 is not finite");
+    if (coincident(position, w.camera.targets.front()))
+      fail("walkthrough: camera.targets: the fixed camera's target is its position ({}, {}, {}): it gives no "
+           "direction to look in",
+           position.x, position.y, position.z);
+  }
   return w;
 }
 
@@ -77,12 +92,23 @@ mat4 CameraState::view() const {
   return glm::lookAt(position, position + forward, stable_up(forward, up));
 }
 
+namespace {
+
+// The camera spline, or none for a fixed camera.
+std::optional<CatmullRomSpline> make_camera_path(const CameraPathSpec& camera) {
+  if (camera.is_fixed()) return std::nullopt;
+  return make_spline(camera.points, "camera.points");
+}
+
+}  // namespace
+
 WalkthroughAnimation::WalkthroughAnimation(const Walkthrough& walkthrough, vec3 rest_light_position)
-    : camera_path_(make_spline(validated(walkthrough).camera.points, "camera.points")),
+    : camera_path_(make_camera_path(validated(walkthrough).camera)),
       light_path_(make_light_path(walkthrough.light, rest_light_position)),
       frame_count_(walkthrough.frame_count),
       frames_per_second_(walkthrough.frames_per_second),
       fov_y_degrees_(walkthrough.camera.fov_y_degrees) {
+  if (!camera_path_) fixed_position_ = walkthrough.camera.points.front();
   const std::vector<vec3>& targets = walkthrough.camera.targets;
   if (targets.empty()) return;
   for (std::size_t i = 0; i < targets.size(); ++i)
@@ -98,7 +124,8 @@ WalkthroughAnimation::WalkthroughAnimation(const Scene& scene)
     : WalkthroughAnimation(scene.walkthrough, scene.light.position) {}
 
 float WalkthroughAnimation::camera_speed_per_frame() const {
-  return frame_count_ > 1 ? static_cast<float>(camera_path_.length_d() / double(frame_count_ - 1)) : 0.0f;
+  if (!camera_path_ || frame_count_ <= 1) return 0.0f;
+  return static_cast<float>(camera_path_->length_d() / double(frame_count_ - 1));
 }
 
 FrameState WalkthroughAnimation::at(int frame) const {
@@ -106,19 +133,26 @@ FrameState WalkthroughAnimation::at(int frame) const {
     fail("walkthrough: frame {} is out of range [0, {})", frame, frame_count_);
   // Constant speed: equal frame steps are equal arc-length steps; the last frame is the path's end.
   const double fraction = frame_count_ > 1 ? double(frame) / double(frame_count_ - 1) : 0.0;
-  const double s = fraction * camera_path_.length_d();
 
   FrameState state;
   state.frame = frame;
   state.time_seconds = static_cast<float>(double(frame) / double(frames_per_second_));
+  state.light_position = light_path_.at(frame);
   CameraState& camera = state.camera;
   camera.fov_y_degrees = fov_y_degrees_;
-  camera.position = vec3(camera_path_.position_at_distance_d(s));
+  if (fixed_position_) {  // validated: one target, apart from the position
+    camera.position = *fixed_position_;
+    camera.target = *fixed_target_;
+    camera.up = stable_up(glm::normalize(camera.target - camera.position), kWorldUp);
+    return state;
+  }
+  const double s = fraction * camera_path_->length_d();
+  camera.position = vec3(camera_path_->position_at_distance_d(s));
   // A point ahead along the path's tangent; one unit ahead, or further for huge coordinates so that
   // it stays distinguishable from the position in float.
   const vec3 p = camera.position;
   const float ahead = std::max({1.0f, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  const vec3 along_path = p + ahead * vec3(camera_path_.tangent_at_distance_d(s));
+  const vec3 along_path = p + ahead * vec3(camera_path_->tangent_at_distance_d(s));
   if (target_path_)
     camera.target = vec3(target_path_->position_at_distance_d(fraction * target_path_->length_d()));
   else if (fixed_target_)
@@ -128,7 +162,6 @@ FrameState WalkthroughAnimation::at(int frame) const {
   // A target on the camera gives no direction: look along the path instead.
   if (coincident(camera.position, camera.target)) camera.target = along_path;
   camera.up = stable_up(glm::normalize(camera.target - camera.position), kWorldUp);
-  state.light_position = light_path_.at(frame);
   return state;
 }
 

@@ -34,8 +34,8 @@ struct FrameState {
 class WalkthroughAnimation {
 public:
   // Validates the walkthrough (frame_count > 0, frames_per_second > 0, light period_frames > 0, at
-  // least 2 distinct camera points, finite points, 0 < fov < 180) and throws glint::Error naming the
-  // field otherwise. `rest_light_position` is where the light stays when the light path is empty
+  // least 2 distinct camera points or a fixed camera (one point, one target apart from it), finite
+  // points, 0 < fov < 180) and throws glint::Error naming the field otherwise. `rest_light_position` is where the light stays when the light path is empty
   // (pass the scene's PointLight::position).
   WalkthroughAnimation(const Walkthrough& walkthrough, vec3 rest_light_position);
   // The scene's walkthrough, with its light's position as the rest position.
@@ -45,14 +45,16 @@ public:
   FrameState at(int frame) const;
 
   int frame_count() const { return frame_count_; }
-  float camera_path_length() const { return camera_path_.length(); }
+  // 0 for a fixed camera.
+  float camera_path_length() const { return camera_path_ ? camera_path_->length() : 0.0f; }
   // One way, first light point to last (a full period covers twice this).
   float light_path_length() const { return light_path_.length(); }
   // Distance the camera covers between consecutive frames (0 for a one-frame walkthrough).
   float camera_speed_per_frame() const;
 
 private:
-  CatmullRomSpline camera_path_;
+  std::optional<CatmullRomSpline> camera_path_;  // empty: a fixed camera at fixed_position_
+  std::optional<vec3> fixed_position_;
   std::optional<CatmullRomSpline> target_path_;  // two or more targets
   std::optional<vec3> fixed_target_;             // exactly one target
   LightPath light_path_;

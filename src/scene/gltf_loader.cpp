@@ -90,9 +90,8 @@ public:
     if (degenerate_triangles_ > 0)
       log_warning("{}: dropped {} degenerate (zero-area) triangle(s)", label_, degenerate_triangles_);
     if (scene_.instances.empty()) fail("{}: the scene is empty (no node of the scene references triangles)", label_);
-    assign_default_walkthrough(scene_);
-    if (first_camera_)  // the file's own camera replaces the default camera (gltf_cameras.h)
-      if (auto camera = gltf_fixed_camera(model_, *first_camera_, label_)) scene_.walkthrough.camera = *camera;
+    // The file's own camera when it has one (gltf_cameras.h), else a default one; the light fits it.
+    assign_default_walkthrough(scene_, first_camera_ ? gltf_fixed_camera(model_, *first_camera_, label_) : std::nullopt);
     scene_.validate();
     return std::move(scene_);
   }

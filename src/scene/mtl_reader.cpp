@@ -41,17 +41,47 @@ bool is_colour_statement(std::string_view keyword) {
 }
 
 bool is_scalar_statement(std::string_view keyword) {
-  static const std::unordered_set<std::string_view> scalars{"Ns", "Ni", "d",  "Tr",  "illum", "Pm",    "Pr",
+  static const std::unordered_set<std::string_view> scalars{"Ns", "Ni", "d",  "Tr",  "illum", "Pm",    "Pr",  "Km",
                                                             "Ps", "Pc", "Pcr", "aniso", "anisor", "sharpness"};
   return scalars.count(keyword) != 0;
 }
+
+// The statements of one material that can make it a mirror, kept until the material is complete
+// because they combine (see reflectivity()).
+struct ReflectionStatements {
+  std::optional<float> metallic;       // Pm
+  std::optional<float> mirror;         // Km
+  std::optional<vec3> specular;        // Ks
+  std::optional<float> illumination;   // illum
+
+  // MTL says "this surface mirrors its surroundings" in several ways; glint has one reflectivity
+  // (0..1, the weight of the mirror image). The most explicit statement wins:
+  //   Pm m (PBR metallic)                      -> m
+  //   Km m (a mirror amount some exporters write; not in the Wavefront spec) -> m
+  //   illum 3..7 (the models with ray-traced reflection) -> Ks's largest component, 1 without Ks
+  //     (in those models Ks weights the reflected colour)
+  //   anything else (illum 0-2, 8-10, or none)  -> 0: Ks is then only the highlight's colour
+  // clamped to 0..1.
+  float reflectivity() const {
+    if (metallic) return std::clamp(*metallic, 0.0f, 1.0f);
+    if (mirror) return std::clamp(*mirror, 0.0f, 1.0f);
+    const bool ray_traced_reflection = illumination && *illumination >= 3.0f && *illumination <= 7.0f &&
+                                       std::floor(*illumination) == *illumination;
+    if (!ray_traced_reflection) return 0.0f;
+    if (!specular) return 1.0f;
+    return std::clamp(std::max({specular->x, specular->y, specular->z}), 0.0f, 1.0f);
+  }
+};
 
 class MtlTextReader {
 public:
   explicit MtlTextReader(std::string_view file_label) : file_(file_label) {}
 
   void read_line(std::string_view line, std::size_t line_number);
-  std::vector<MtlMaterial> finish() { return std::move(materials_); }
+  std::vector<MtlMaterial> finish() {
+    for (std::size_t i = 0; i < materials_.size(); ++i) materials_[i].material.reflectivity = reflections_[i].reflectivity();
+    return std::move(materials_);
+  }
 
 private:
   template <typename... Args>
@@ -61,6 +91,7 @@ private:
 
   // The material that statements apply to; a statement before any `newmtl` is malformed.
   MtlMaterial& current(std::string_view keyword);
+  ReflectionStatements& current_reflection(std::string_view keyword);
   void start_material(std::string_view rest);
   // nullopt for a spectral curve ("Kd spectral file.rfl"), which has no RGB value to use.
   std::optional<vec3> read_colour(std::string_view keyword, std::string_view rest);
@@ -69,15 +100,22 @@ private:
   std::string_view file_;
   std::size_t line_ = 0;
   std::vector<MtlMaterial> materials_;
+  std::vector<ReflectionStatements> reflections_;  // one per material
   std::unordered_set<std::string> names_;
   bool skipping_duplicate_ = false;  // inside a second definition of a name: read, then dropped
   MtlMaterial duplicate_;
+  ReflectionStatements duplicate_reflection_;
 };
 
 MtlMaterial& MtlTextReader::current(std::string_view keyword) {
   if (skipping_duplicate_) return duplicate_;
   if (materials_.empty()) fail_here("'{}' before any 'newmtl'", keyword);
   return materials_.back();
+}
+
+ReflectionStatements& MtlTextReader::current_reflection(std::string_view keyword) {
+  (void)current(keyword);  // the same checks
+  return skipping_duplicate_ ? duplicate_reflection_ : reflections_.back();
 }
 
 void MtlTextReader::start_material(std::string_view rest) {
@@ -91,9 +129,11 @@ void MtlTextReader::start_material(std::string_view rest) {
   if (skipping_duplicate_) {
     log_warning("{}:{}: material '{}' is defined again; the first definition is used", file_, line_, name);
     duplicate_ = std::move(material);
+    duplicate_reflection_ = {};
     return;
   }
   materials_.push_back(std::move(material));
+  reflections_.emplace_back();
 }
 
 std::optional<vec3> MtlTextReader::read_colour(std::string_view keyword, std::string_view rest) {
@@ -139,13 +179,18 @@ void MtlTextReader::read_line(std::string_view line, std::size_t line_number) {
     Material& material = current(keyword).material;
     if (!colour) return;  // spectral: the default stays
     if (keyword == "Kd") material.diffuse = *colour;
-    if (keyword == "Ks") material.specular = *colour;
+    if (keyword == "Ks") {
+      material.specular = *colour;
+      current_reflection(keyword).specular = *colour;
+    }
     if (keyword == "Ke") material.emissive = *colour;
   } else if (is_scalar_statement(keyword)) {
     const float value = read_scalar(keyword, rest);
     Material& material = current(keyword).material;
     if (keyword == "Ns") material.specular_exponent = std::max(value, 0.0f);
-    if (keyword == "Pm") material.reflectivity = std::clamp(value, 0.0f, 1.0f);
+    if (keyword == "Pm") current_reflection(keyword).metallic = value;
+    if (keyword == "Km") current_reflection(keyword).mirror = value;
+    if (keyword == "illum") current_reflection(keyword).illumination = value;
     if (keyword == "Pr") material.roughness = std::clamp(value, 0.0f, 1.0f);
   } else if (keyword == "map_Kd") {
     const std::string_view name = texture_file_name(rest);

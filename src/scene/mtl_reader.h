@@ -5,10 +5,11 @@
 // The mapping from MTL to glint::Material (everything else in the file is ignored):
 //   Kd r g b  -> diffuse              Ks r g b -> specular        Ke r g b -> emissive
 //   Ns n      -> specular_exponent    map_Kd   -> diffuse texture (file name, options skipped)
-//   Pm m      -> reflectivity (the PBR extension's "metallic", clamped to 0..1; 0 when absent)
+//   Pm, Km, illum 3-7 with Ks -> reflectivity (ReflectionStatements::reflectivity in mtl_reader.cpp,
+//                                docs/scene-format.md "OBJ materials": Pm, else Km, else Ks under illum 3-7)
 //   Pr r      -> roughness (clamped to 0..1; 0 when absent)
 // A colour with one number is grey (MTL spec: g and b default to r). Statements the renderer has no
-// use for (Ka, Tf, Ni, d, Tr, illum, ...) are still checked so that a broken file is caught early.
+// use for (Ka, Tf, Ni, d, Tr, ...) are still checked so that a broken file is caught early.
 #include "scene/scene.h"
 
 #include <cstddef>

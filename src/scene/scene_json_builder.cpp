@@ -71,10 +71,11 @@ void apply_floor(Scene& scene, const SceneDescription& description) {
 }
 
 void apply_walkthrough(Scene& scene, const SceneDescription& description) {
-  // The default walkthrough fits the scene's bounds; whatever the file gives replaces its part.
-  if (!description.camera || !description.light) assign_default_walkthrough(scene);
-  scene.walkthrough.frame_count = description.frames;
+  scene.walkthrough.frame_count = description.frames;  // first: a default light may follow the camera over all frames
   scene.walkthrough.frames_per_second = description.frames_per_second;
+  // The default walkthrough is placed from the geometry, for the file's camera when it has one;
+  // whatever the file gives replaces its part.
+  if (!description.camera || !description.light) assign_default_walkthrough(scene, description.camera);
   if (description.camera) scene.walkthrough.camera = *description.camera;
   if (description.light) {
     const LightDescription& light = *description.light;

@@ -121,16 +121,31 @@ LightDescription parse_light(const JsonField& field) {
 }
 
 CameraPathSpec parse_camera(const JsonField& field) {
-  field.require_object({"path", "targets", "fov_y_degrees"});
+  field.require_object({"path", "targets", "position", "target", "fov_y_degrees"});
   CameraPathSpec camera;
+  if (auto f = field.find("fov_y_degrees")) camera.fov_y_degrees = f->number_in(1.0f, 179.0f);
+  // A fixed camera ("position" + "target") or a path ("path", optional "targets"), not both.
+  const auto position = field.find("position");
+  const auto target = field.find("target");
+  if (position || target) {
+    if (auto f = field.find("path")) f->error("give either \"path\" (a moving camera) or \"position\" and \"target\" (a fixed one), not both");
+    if (auto f = field.find("targets")) f->error("\"targets\" belongs to a \"path\"; a fixed camera has one \"target\"");
+    if (!position) field.error("a fixed camera needs \"position\" as well as \"target\"");
+    if (!target) field.error("a fixed camera needs \"target\" as well as \"position\"");
+    camera = CameraPathSpec::fixed(position->vec3_value(), target->vec3_value(), camera.fov_y_degrees);
+    if (glm::length(camera.targets.front() - camera.points.front()) <= 0.0f) target->error("the target equals the position");
+    return camera;
+  }
   const JsonField path = field.at("path");
   camera.points = path.points();
-  if (camera.points.size() < 2) path.error("the camera path needs at least 2 points, got {}", camera.points.size());
+  if (camera.points.size() < 2)
+    path.error("the camera path needs at least 2 points, got {} (a camera that does not move: \"position\" and "
+               "\"target\")",
+               camera.points.size());
   if (auto f = field.find("targets")) {
     camera.targets = f->points();
     if (camera.targets.size() < 2) f->error("camera targets need at least 2 points, got {}", camera.targets.size());
   }
-  if (auto f = field.find("fov_y_degrees")) camera.fov_y_degrees = f->number_in(1.0f, 179.0f);
   return camera;
 }
 

@@ -9,11 +9,18 @@ namespace glint {
 
 struct CameraPathSpec {
   // The camera passes through these points on a centripetal Catmull-Rom spline at constant speed.
+  // Exactly one point (with exactly one target) is a fixed camera: it stays there for every frame.
   std::vector<vec3> points;
   // Look-at targets on a second spline, traversed in step with the camera (same arc-length
   // fraction). Empty: the camera looks along the path's tangent.
   std::vector<vec3> targets;
   float fov_y_degrees = 60.0f;
+
+  // A camera that does not move: at `position`, looking at `target`.
+  static CameraPathSpec fixed(vec3 position, vec3 target, float fov_y_degrees = 60.0f) {
+    return {{position}, {target}, fov_y_degrees};
+  }
+  bool is_fixed() const { return points.size() == 1; }
 };
 
 struct LightPathSpec {

@@ -1,0 +1,43 @@
+#pragma once
+// Rays cast against a scene's world triangles on the CPU, for decisions taken at load time from the
+// geometry itself (where the default camera and light go: default_walkthrough.cpp). One SAH BVH from
+// accel/ over every instance's triangles in world space; no materials, no instancing, no updates.
+#include "accel/bvh.h"
+#include "accel/ray.h"
+#include "core/math.h"
+#include "scene/scene.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace glint {
+
+struct ProbeHit {
+  bool hit = false;
+  float distance = 0.0f;     // along the ray's unit direction
+  std::uint32_t triangle = 0;  // world triangle index (the order of instances, then of their triangles)
+  vec3 point{0.0f};
+  // Unit geometric normal of the triangle, on its front side: the side from which its corners run
+  // counter-clockwise, as OBJ and glTF define front faces. So a ray with dot(direction, normal) > 0
+  // hits a back face, e.g. from inside a closed object whose faces point outwards.
+  vec3 normal{0.0f, 1.0f, 0.0f};
+};
+
+class SceneRayProbe {
+public:
+  explicit SceneRayProbe(const Scene& scene);
+
+  // Closest hit of each ray; directions must be unit vectors (distances are then lengths).
+  std::vector<ProbeHit> closest(std::span<const accel::Ray> rays) const;
+
+  const Aabb& bounds() const { return bounds_; }
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners_.size() / 3); }
+
+private:
+  std::vector<vec3> corners_;  // three per world triangle
+  Aabb bounds_;
+  accel::Bvh bvh_;
+};
+
+}  // namespace glint
