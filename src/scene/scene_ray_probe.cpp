@@ -4,6 +4,8 @@
 #include "accel/trace.h"
 #include "accel/triangle_mesh.h"
 
+#include <algorithm>
+
 namespace glint {
 
 SceneRayProbe::SceneRayProbe(const Scene& scene) {
@@ -31,7 +33,47 @@ SceneRayProbe::SceneRayProbe(const Scene& scene) {
       }
     }
   }
+  remove_duplicate_triangles();
   bvh_ = accel::build_bvh(accel::BvhBuilder::sah, accel::make_triangle_soup(corners_));
+}
+
+// Copies of one triangle in the same place (instances with the same transform, a face repeated in a
+// file) cannot be told apart by a BVH: every ray that reaches one tests them all, so 10^5 copies cost
+// minutes. One copy answers every ray the same way. A triangle is compared with its corners rotated
+// to start at the smallest, so the same winding written from another corner is the same triangle.
+void SceneRayProbe::remove_duplicate_triangles() {
+  const std::size_t count = corners_.size() / 3;
+  const auto less = [](const vec3& a, const vec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  };
+  for (std::size_t t = 0; t < count; ++t) {
+    vec3* c = &corners_[3 * t];
+    const std::size_t first = less(c[1], c[0]) ? (less(c[2], c[1]) ? 2 : 1) : (less(c[2], c[0]) ? 2 : 0);
+    std::rotate(c, c + first, c + 3);
+  }
+  std::vector<std::uint32_t> order(count);
+  for (std::size_t t = 0; t < count; ++t) order[t] = static_cast<std::uint32_t>(t);
+  const auto triangle_less = [&](std::uint32_t a, std::uint32_t b) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const vec3& p = corners_[3 * std::size_t{a} + k];
+      const vec3& q = corners_[3 * std::size_t{b} + k];
+      if (p != q) return less(p, q);
+    }
+    return a < b;  // a stable, total order: the first copy is kept
+  };
+  std::sort(order.begin(), order.end(), triangle_less);
+  std::vector<bool> keep(count, true);
+  for (std::size_t i = 1; i < count; ++i) {
+    const std::size_t a = 3 * std::size_t{order[i - 1]}, b = 3 * std::size_t{order[i]};
+    keep[order[i]] = !(corners_[a] == corners_[b] && corners_[a + 1] == corners_[b + 1] && corners_[a + 2] == corners_[b + 2]);
+  }
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < count; ++t) {
+    if (!keep[t]) continue;
+    for (std::size_t k = 0; k < 3; ++k) corners_[3 * kept + k] = corners_[3 * t + k];
+    ++kept;
+  }
+  corners_.resize(3 * kept);
 }
 
 std::vector<ProbeHit> SceneRayProbe::closest(std::span<const accel::Ray> rays) const {

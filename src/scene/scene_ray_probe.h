@@ -1,7 +1,8 @@
 #pragma once
 // Rays cast against a scene's world triangles on the CPU, for decisions taken at load time from the
 // geometry itself (where the default camera and light go: default_walkthrough.cpp). One SAH BVH from
-// accel/ over every instance's triangles in world space; no materials, no instancing, no updates.
+// accel/ over every instance's triangles in world space, each distinct triangle once (copies in the
+// same place would make every ray test them all); no materials, no instancing, no updates.
 #include "accel/bvh.h"
 #include "accel/ray.h"
 #include "core/math.h"
@@ -16,7 +17,7 @@ namespace glint {
 struct ProbeHit {
   bool hit = false;
   float distance = 0.0f;     // along the ray's unit direction
-  std::uint32_t triangle = 0;  // world triangle index (the order of instances, then of their triangles)
+  std::uint32_t triangle = 0;  // identifies the triangle hit (an index into the probe's own list)
   vec3 point{0.0f};
   // Unit geometric normal of the triangle, on its front side: the side from which its corners run
   // counter-clockwise, as OBJ and glTF define front faces. So a ray with dot(direction, normal) > 0
@@ -35,6 +36,8 @@ public:
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners_.size() / 3); }
 
 private:
+  void remove_duplicate_triangles();
+
   std::vector<vec3> corners_;  // three per world triangle
   Aabb bounds_;
   accel::Bvh bvh_;
