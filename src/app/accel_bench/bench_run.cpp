@@ -71,10 +71,9 @@ double seconds_of(const std::function<void()>& work) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& menu, const rt::SceneGeometry& geometry,
+void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& menu, const accel::TriangleMesh& mesh,
                 std::span<const accel::Ray> rays, BenchReport& report) {
-  const accel::TriangleMesh mesh = geometry.mesh();
-  const float scene_magnitude = coordinate_magnitude(geometry.bounds());
+  const HitGeometry checked = hit_geometry(mesh);
   std::vector<accel::Hit> reference_hits, hits(rays.size());
   for (const std::string& name : options.structures) {
     report_progress(options, fmt::format("accel-bench: {}: building over {} triangles", name, mesh.triangle_count));
@@ -108,7 +107,7 @@ void run_static(const BenchOptions& options, const std::vector<CandidateEntry>& 
       reference_hits = hits;
       report.ray_hits = static_cast<size_t>(std::count_if(hits.begin(), hits.end(), [](const accel::Hit& h) { return h.valid(); }));
     } else {
-      const HitCheck check = check_hits(name, report.reference, rays, reference_hits, hits, scene_magnitude);
+      const HitCheck check = check_hits(name, report.reference, rays, reference_hits, hits, checked);
       result.disagreements = check.disagreements;
       result.edge_grazes = check.edge_grazes;
       result.hit_problem = check.problem;
@@ -174,8 +173,8 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
     }
   }
   // The refitted structures must still find what the rebuilt ones find.
-  const Aabb bounds = geometry.bounds();
-  const std::vector<accel::Ray> rays = random_rays(bounds, 20000, options.seed + 1);
+  const std::vector<accel::Ray> rays = random_rays(geometry.bounds(), 20000, options.seed + 1);
+  const HitGeometry checked = hit_geometry(mesh);
   std::vector<accel::Hit> refit_hits(rays.size()), rebuild_hits(rays.size());
   for (Pair& pair : pairs) {
     DeformResult& result = pair.result;
@@ -187,7 +186,7 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
         pair.refitted.trace_closest(rays, refit_hits);
         pair.rebuilt.trace_closest(rays, rebuild_hits);
         const HitCheck check = check_hits(result.name + " (refitted)", result.name + " (rebuilt)", rays, rebuild_hits,
-                                          refit_hits, coordinate_magnitude(bounds));
+                                          refit_hits, checked);
         result.disagreements = check.disagreements;
         result.hit_problem = check.problem;
       }
@@ -249,7 +248,7 @@ BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
     report.ray_count = rays.size();
     report_progress(options, fmt::format("accel-bench: {} {} rays over {} triangles", rays.size(),
                                          ray_kind_name(options.rays), geometry.triangle_count()));
-    run_static(options, menu, geometry, rays, report);
+    run_static(options, menu, geometry.mesh(), rays, report);
   }
   run_deform(scene, options, menu, report);
   return report;

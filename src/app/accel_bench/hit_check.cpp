@@ -15,25 +15,47 @@ float max_abs(const vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), st
 
 float edge_distance(const accel::Hit& hit) { return std::min({hit.u, hit.v, 1.0f - hit.u - hit.v}); }
 
-}  // namespace
-
-float coordinate_magnitude(const Aabb& bounds) {
-  return bounds.empty() ? 0.0f : std::max(max_abs(bounds.min), max_abs(bounds.max));
+// The incidence cosine of a hit's triangle, or nullopt when the scene has no such triangle.
+std::optional<float> hit_cosine(const accel::Ray& ray, const accel::Hit& hit, const HitGeometry& geometry) {
+  if (hit.prim >= geometry.mesh.triangle_count) return std::nullopt;
+  return incidence_cosine(ray, geometry.mesh.triangle(hit.prim));
 }
 
-float hit_t_tolerance(const accel::Ray& ray, float scene_magnitude) {
-  const float magnitude = std::max(scene_magnitude, max_abs(ray.origin));
-  return kHitToleranceUlps * FLT_EPSILON * magnitude / glm::length(ray.direction);
+}  // namespace
+
+HitGeometry hit_geometry(const accel::TriangleMesh& mesh) {
+  const size_t vertices = mesh.indices != nullptr ? mesh.vertex_count : 3 * static_cast<size_t>(mesh.triangle_count);
+  float magnitude = 0.0f;
+  for (size_t i = 0; i < vertices; ++i) magnitude = std::max(magnitude, max_abs(mesh.positions[i]));
+  return {mesh, magnitude};
+}
+
+float incidence_cosine(const accel::Ray& ray, const accel::Triangle& triangle) {
+  const vec3 normal = glm::cross(triangle.v1 - triangle.v0, triangle.v2 - triangle.v0);
+  const float lengths = glm::length(normal) * glm::length(ray.direction);
+  const float cosine = lengths > 0.0f ? std::abs(glm::dot(normal, ray.direction)) / lengths : 0.0f;
+  return std::isfinite(cosine) ? std::min(cosine, 1.0f) : 0.0f;
+}
+
+float hit_t_tolerance(const accel::Ray& ray, float magnitude, float incidence_cosine) {
+  const float coordinates = std::max(magnitude, max_abs(ray.origin));
+  return kHitToleranceUlps * FLT_EPSILON * coordinates /
+         (glm::length(ray.direction) * std::max(incidence_cosine, kMinIncidenceCosine));
 }
 
 std::optional<std::string> hit_disagreement(const accel::Ray& ray, const accel::Hit& reference, const accel::Hit& actual,
-                                            float scene_magnitude) {
+                                            const HitGeometry& geometry) {
   if (reference.valid() != actual.valid())
     return reference.valid() ? fmt::format("missed, the reference hits triangle {} at t {}", reference.prim, reference.t)
                              : fmt::format("hit triangle {} at t {}, the reference misses", actual.prim, actual.t);
   if (!reference.valid()) return std::nullopt;
+  const std::optional<float> reference_cosine = hit_cosine(ray, reference, geometry);
+  const std::optional<float> cosine = hit_cosine(ray, actual, geometry);
+  if (!reference_cosine || !cosine)
+    return fmt::format("hit triangle {}, the reference triangle {}, of a scene of {} triangles", actual.prim,
+                       reference.prim, geometry.mesh.triangle_count);
   // The same rule for the same triangle and for another one (a tie): either may be right.
-  const float tolerance = hit_t_tolerance(ray, scene_magnitude);
+  const float tolerance = hit_t_tolerance(ray, geometry.magnitude, std::min(*reference_cosine, *cosine));
   if (std::abs(reference.t - actual.t) > tolerance)
     return fmt::format("hit triangle {} at t {}, the reference hits triangle {} at t {} (more than {:.3g} apart)",
                        actual.prim, actual.t, reference.prim, reference.t, tolerance);
@@ -49,14 +71,15 @@ bool is_edge_graze(const accel::Hit& reference, const accel::Hit& actual) {
 }
 
 HitCheck check_hits(std::string_view structure, std::string_view reference, std::span<const accel::Ray> rays,
-                    std::span<const accel::Hit> reference_hits, std::span<const accel::Hit> hits, float scene_magnitude) {
+                    std::span<const accel::Hit> reference_hits, std::span<const accel::Hit> hits,
+                    const HitGeometry& geometry) {
   if (rays.size() != reference_hits.size() || rays.size() != hits.size())
     fail("accel-bench: {} rays, {} hits of {}, {} hits of {}", rays.size(), reference_hits.size(), reference,
          hits.size(), structure);
   HitCheck check;
   std::string first;
   for (size_t i = 0; i < rays.size(); ++i) {
-    const std::optional<std::string> why = hit_disagreement(rays[i], reference_hits[i], hits[i], scene_magnitude);
+    const std::optional<std::string> why = hit_disagreement(rays[i], reference_hits[i], hits[i], geometry);
     if (!why) continue;
     if (is_edge_graze(reference_hits[i], hits[i])) {
       ++check.edge_grazes;
