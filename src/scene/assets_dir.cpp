@@ -1,14 +1,20 @@
 #include "scene/assets_dir.h"
 
 #include "core/error.h"
+#include "core/untrusted_text.h"
 
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <vector>
 
 namespace glint {
 namespace {
+
+constexpr const char* kHowToPointGlintAtTheAssets =
+    "set GLINT_ASSETS=/path/to/assets (the folder holding sponza_dabrovic/, armadillo/, ...; ../shared/assets "
+    "beside the checkout) or pass the assets folder explicitly";
 
 struct Candidate {
   std::string origin;  // where the candidate came from, for the error message
@@ -31,13 +37,20 @@ std::filesystem::path executable_folder() {
 
 std::filesystem::path find_assets_dir(const LoadOptions& options,
                                       const std::optional<std::filesystem::path>& scene_assets) {
-  std::vector<Candidate> candidates;
-  std::vector<std::string> not_set;
-  if (options.assets_dir) candidates.push_back({"the assets option", *options.assets_dir});
+  // A folder someone named is used or is an error: falling back to another folder would load other
+  // meshes than the ones asked for, without a word.
+  std::optional<Candidate> named;
   const char* env = std::getenv("GLINT_ASSETS");
-  if (env != nullptr && *env != '\0') candidates.push_back({"$GLINT_ASSETS", env});
-  else not_set.push_back("$GLINT_ASSETS is not set");
-  if (scene_assets) candidates.push_back({"the scene's \"assets\" entry", *scene_assets});
+  if (options.assets_dir) named = Candidate{"the assets option (--assets)", *options.assets_dir};
+  else if (env != nullptr && *env != '\0') named = Candidate{"$GLINT_ASSETS", env};
+  else if (scene_assets) named = Candidate{"the scene's \"assets\" entry", *scene_assets};
+  if (named) {
+    if (is_existing_folder(named->folder)) return named->folder.lexically_normal();
+    fail("assets folder not found: '{}', given by {}, is not a folder; {}", untrusted_text(named->folder.string()),
+         named->origin, kHowToPointGlintAtTheAssets);
+  }
+
+  std::vector<Candidate> candidates;
   std::error_code no_cwd;
   const std::filesystem::path cwd = std::filesystem::current_path(no_cwd);
   candidates.push_back({"the current directory", (no_cwd ? std::filesystem::path(".") : cwd) / ".." / "shared" / "assets"});
@@ -53,11 +66,8 @@ std::filesystem::path find_assets_dir(const LoadOptions& options,
   for (const Candidate& candidate : candidates)
     looked += fmt::format("{}{} (from {})", looked.empty() ? "" : ", ", candidate.folder.lexically_normal().string(),
                           candidate.origin);
-  for (const std::string& note : not_set) looked += fmt::format(" ({})", note);
   // One line, like every glint::Error, so the CLI can print it as is.
-  fail("assets folder not found; looked in: {}; set GLINT_ASSETS=/path/to/assets (the folder holding "
-       "sponza_dabrovic/, armadillo/, ...) or pass the assets folder explicitly",
-       looked);
+  fail("assets folder not found; looked in: {} ($GLINT_ASSETS is not set); {}", looked, kHowToPointGlintAtTheAssets);
 }
 
 }  // namespace glint

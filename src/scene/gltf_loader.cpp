@@ -24,9 +24,10 @@ namespace {
 
 constexpr int kNoSlot = -1;
 
-// The most instances a glTF's node hierarchy may expand to (docs/scene-format.md, "Limits"): far
-// above real scenes (the paper's largest has a few hundred), far below what would exhaust memory
-// (an instance is about 100 bytes here, and more in every acceleration structure).
+// The most instances a glTF's node hierarchy may expand to, and the most node visits (one per node on
+// each path from a root) it may take (docs/scene-format.md, "Limits"): far above real scenes (the
+// paper's largest has a few hundred instances), far below what would exhaust memory or time (an
+// instance is about 100 bytes here, and more in every acceleration structure).
 constexpr std::uint64_t kMaxGltfInstances = 1'000'000;
 
 // True when the file starts with the binary glTF magic "glTF" (whatever its extension says).
@@ -115,16 +116,20 @@ private:
   }
 
   // The node graph may be a DAG (a child listed by several parents, or twice by one): each path from a
-  // root is one more instance, so 41 levels that each list the same child twice are 2^41 instances
-  // in 1.3 KB of JSON. Count them first, per node and saturating, with a depth-first walk that also
-  // finds cycles, and refuse more than kMaxGltfInstances before anything is expanded.
+  // root visits its nodes once more and makes one more instance, so 41 levels that each list the same
+  // child twice are 2^41 visits and instances from 1.3 KB of JSON. Count both first, per node and
+  // saturating, with a depth-first walk that also finds cycles, and refuse more than
+  // kMaxGltfInstances of either before anything is expanded.
   void check_instance_expansion(const std::vector<int>& roots) const {
     enum class State : std::uint8_t { unvisited, open, done };
-    std::vector<State> state(model_.nodes.size(), State::unvisited);
-    std::vector<std::uint64_t> instances(model_.nodes.size(), 0);  // below and at each node, saturated
-    const auto saturating_add = [](std::uint64_t a, std::uint64_t b) {
-      return std::min<std::uint64_t>(a + b, kMaxGltfInstances + 1);  // both <= limit + 1: no wrap
+    struct Counts {
+      std::uint64_t visits = 0;     // the node and every node below it, once per path
+      std::uint64_t instances = 0;  // at most one per primitive of each mesh visited
     };
+    static constexpr std::uint64_t kSaturated = kMaxGltfInstances + 1;  // static: std::min binds it by reference
+    const auto saturating_add = [](std::uint64_t a, std::uint64_t b) { return std::min(a + b, kSaturated); };  // a, b <= kSaturated
+    std::vector<State> state(model_.nodes.size(), State::unvisited);
+    std::vector<Counts> below(model_.nodes.size());
     const auto check_index = [&](int index) {
       if (index < 0 || static_cast<std::size_t>(index) >= model_.nodes.size())
         fail("{}: node {} does not exist ({} nodes)", label_, index, model_.nodes.size());
@@ -135,10 +140,10 @@ private:
       std::size_t next_child;
     };
     std::vector<Frame> stack;  // explicit, so that a chain of a million nodes cannot overflow the call stack
-    std::uint64_t total = 0;
+    Counts total;
     for (int root : roots) {
       const std::size_t start = check_index(root);
-      if (state[start] != State::done) {
+      if (state[start] == State::unvisited) {
         stack.push_back({start, 0});
         state[start] = State::open;
       }
@@ -154,20 +159,24 @@ private:
           }
           continue;
         }
-        std::uint64_t count = 0;
+        Counts counts{1, 0};
         if (node.mesh >= 0 && static_cast<std::size_t>(node.mesh) < model_.meshes.size())
-          count = model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size();  // at most one instance each
-        for (int child : node.children) count = saturating_add(count, instances[static_cast<std::size_t>(child)]);
-        instances[frame.node] = std::min<std::uint64_t>(count, kMaxGltfInstances + 1);
+          counts.instances = std::min<std::uint64_t>(model_.meshes[static_cast<std::size_t>(node.mesh)].primitives.size(), kSaturated);
+        for (int child : node.children) {
+          counts.visits = saturating_add(counts.visits, below[static_cast<std::size_t>(child)].visits);
+          counts.instances = saturating_add(counts.instances, below[static_cast<std::size_t>(child)].instances);
+        }
+        below[frame.node] = counts;
         state[frame.node] = State::done;
         stack.pop_back();
       }
-      total = saturating_add(total, instances[start]);
+      total.visits = saturating_add(total.visits, below[start].visits);
+      total.instances = saturating_add(total.instances, below[start].instances);
     }
-    if (total > kMaxGltfInstances)
-      fail("{}: the node hierarchy expands to more than {} instances (nodes reached along many paths, e.g. a "
-           "child listed twice at many levels); glint refuses scenes above that limit",
-           label_, kMaxGltfInstances);
+    if (total.instances > kMaxGltfInstances || total.visits > kMaxGltfInstances)
+      fail("{}: the node hierarchy expands to more than {} {} (nodes reached along many paths, e.g. a child "
+           "listed twice at many levels); glint refuses scenes above that limit",
+           label_, kMaxGltfInstances, total.instances > kMaxGltfInstances ? "instances" : "node visits");
   }
 
   // Every node reached from the roots, depth first and children in order (each path one instance),

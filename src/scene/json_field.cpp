@@ -1,8 +1,14 @@
 #include "scene/json_field.h"
 
+#include "core/untrusted_text.h"
+
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 #include <limits>
+#include <set>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -32,7 +38,10 @@ std::string join_keys(std::initializer_list<std::string_view> keys) {
 JsonField::JsonField(const nlohmann::json& value, std::string file_label, std::string pointer)
     : value_(&value), file_label_(std::move(file_label)), pointer_(std::move(pointer)) {}
 
-std::string JsonField::location() const { return fmt::format("{}: {}", file_label_, pointer_.empty() ? "/" : pointer_); }
+// The pointer is made of the file's keys, so it is shown bounded and escaped.
+std::string JsonField::location() const {
+  return fmt::format("{}: {}", file_label_, pointer_.empty() ? "/" : untrusted_text(pointer_));
+}
 
 JsonField JsonField::child(const nlohmann::json& value, std::string_view key) const {
   return JsonField(value, file_label_, pointer_ + "/" + escape_pointer_token(key));
@@ -138,10 +147,72 @@ TextPosition text_position(std::string_view text, std::size_t offset) {
   return position;
 }
 
+namespace {
+
+// A character iterator over the text that records, in `read`, how far the parser has read: the
+// parser callback is told only what it parsed, not where, and duplicate keys are reported by line.
+struct TrackingIterator {
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  const char* at = nullptr;
+  std::size_t* read = nullptr;
+
+  reference operator*() const { return *at; }
+  TrackingIterator& operator++() {
+    ++at;
+    ++*read;
+    return *this;
+  }
+  TrackingIterator operator++(int) {
+    TrackingIterator before = *this;
+    ++*this;
+    return before;
+  }
+  bool operator==(const TrackingIterator& other) const { return at == other.at; }
+};
+
+// Where the key that ends just before `end` (the byte after its closing quote) starts: its opening
+// quote, the first '"' before the closing one that is not escaped.
+std::size_t key_start(std::string_view text, std::size_t end) {
+  if (end < 2) return 0;
+  for (std::size_t i = end - 1; i-- > 0;) {
+    if (text[i] != '"') continue;
+    std::size_t backslashes = 0;
+    while (i > backslashes && text[i - 1 - backslashes] == '\\') ++backslashes;
+    if (backslashes % 2 == 0) return i;
+  }
+  return 0;
+}
+
+}  // namespace
+
 nlohmann::json parse_json_text(std::string_view text, const std::string& file_label) {
+  // JSON allows repeated keys and nlohmann keeps the last; in glint's files a repeated key is a
+  // mistake (the first value would be silently ignored), so the parser callback refuses it.
+  std::size_t read = 0;
+  std::vector<std::set<std::string>> open_objects;  // the keys seen so far in each enclosing object
+  const auto on_event = [&](int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) open_objects.emplace_back();
+    else if (event == Event::object_end && !open_objects.empty()) open_objects.pop_back();
+    else if (event == Event::key && !open_objects.empty()) {
+      const std::string& key = parsed.get_ref<const std::string&>();
+      if (!open_objects.back().insert(key).second) {
+        const TextPosition at = text_position(text, key_start(text, read));
+        fail("{}:{}:{}: duplicate key \"{}\" (each key may appear once per object)", file_label, at.line, at.column,
+             untrusted_text(key));
+      }
+    }
+    return true;
+  };
+  const TrackingIterator first{text.data(), &read};
+  const TrackingIterator last{text.data() + text.size(), &read};
   try {
-    return nlohmann::json::parse(text.begin(), text.end(), /*callback=*/nullptr, /*allow_exceptions=*/true,
-                                 /*ignore_comments=*/true);
+    return nlohmann::json::parse(first, last, on_event, /*allow_exceptions=*/true, /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is the 1-based index of the last character read, i.e. where the parser gave up.
     const TextPosition at = text_position(text, e.byte > 0 ? e.byte - 1 : 0);
@@ -151,7 +222,7 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& file_la
     const std::size_t column = what.find(", column ");
     const std::size_t colon = column == std::string::npos ? std::string::npos : what.find(": ", column);
     if (colon != std::string::npos) what = what.substr(colon + 2);
-    fail("{}:{}:{}: malformed JSON: {}", file_label, at.line, at.column, what);
+    fail("{}:{}:{}: malformed JSON: {}", file_label, at.line, at.column, untrusted_text(what));  // quotes what it read
   } catch (const nlohmann::json::out_of_range& e) {
     // A number too large for a double ("number overflow parsing '1e999'") carries no position; find
     // the quoted literal in the text instead.
@@ -162,11 +233,11 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& file_la
     const std::size_t close = open == std::string::npos ? std::string::npos : what.find('\'', open + 1);
     const std::size_t at = close == std::string::npos ? std::string_view::npos
                                                       : text.find(what.substr(open + 1, close - open - 1));
-    if (at == std::string_view::npos) fail("{}: malformed JSON: {}", file_label, what);
+    if (at == std::string_view::npos) fail("{}: malformed JSON: {}", file_label, untrusted_text(what));
     const TextPosition position = text_position(text, at);
-    fail("{}:{}:{}: malformed JSON: {}", file_label, position.line, position.column, what);
+    fail("{}:{}:{}: malformed JSON: {}", file_label, position.line, position.column, untrusted_text(what));
   } catch (const nlohmann::json::exception& e) {
-    fail("{}: malformed JSON: {}", file_label, e.what());
+    fail("{}: malformed JSON: {}", file_label, untrusted_text(e.what()));
   }
 }
 

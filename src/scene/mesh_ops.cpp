@@ -1,24 +1,39 @@
 #include "scene/mesh_ops.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace glint {
 
+namespace {
+
+// Twice the triangle's area along its normal, in double: with float coordinates the cross product and
+// its squared length would overflow from legs of about 1e19 (length from 1e9), and underflow to zero
+// below about 1e-19, so huge and tiny (but valid) triangles would lose their normals or be dropped.
+glm::dvec3 face_cross(const vec3& a, const vec3& b, const vec3& c) {
+  return glm::cross(glm::dvec3(b) - glm::dvec3(a), glm::dvec3(c) - glm::dvec3(a));
+}
+
+// `v` / |v| as a float vector, or +y when v has no direction.
+vec3 unit_or_up(const glm::dvec3& v) {
+  const double length = glm::length(v);
+  return (length > 0.0 && std::isfinite(length)) ? vec3(v / length) : vec3(0.0f, 1.0f, 0.0f);
+}
+
+}  // namespace
+
 void compute_smooth_normals(Mesh& mesh) {
-  std::vector<vec3> sum(mesh.positions.size(), vec3(0.0f));
+  std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const std::uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
     // The cross product's length is twice the area, so summing it weights faces by area.
-    const vec3 face = glm::cross(mesh.positions[i1] - mesh.positions[i0], mesh.positions[i2] - mesh.positions[i0]);
+    const glm::dvec3 face = face_cross(mesh.positions[i0], mesh.positions[i1], mesh.positions[i2]);
     sum[i0] += face;
     sum[i1] += face;
     sum[i2] += face;
   }
   mesh.normals.resize(mesh.positions.size());
-  for (std::size_t v = 0; v < sum.size(); ++v) {
-    const float length = glm::length(sum[v]);
-    mesh.normals[v] = (length > 0.0f && std::isfinite(length)) ? sum[v] / length : vec3(0.0f, 1.0f, 0.0f);
-  }
+  for (std::size_t v = 0; v < sum.size(); ++v) mesh.normals[v] = unit_or_up(sum[v]);
 }
 
 void compute_flat_normals(Mesh& mesh) {
@@ -31,9 +46,7 @@ void compute_flat_normals(Mesh& mesh) {
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
                c = mesh.positions[mesh.indices[t + 2]];
-    const vec3 face = glm::cross(b - a, c - a);
-    const float length = glm::length(face);
-    const vec3 normal = length > 0.0f ? face / length : vec3(0.0f, 1.0f, 0.0f);
+    const vec3 normal = unit_or_up(face_cross(a, b, c));
     for (int k = 0; k < 3; ++k) {
       positions.push_back(mesh.positions[mesh.indices[t + k]]);
       normals.push_back(normal);
@@ -47,11 +60,15 @@ void compute_flat_normals(Mesh& mesh) {
 }
 
 bool is_degenerate_triangle(const vec3& a, const vec3& b, const vec3& c) {
-  const vec3 e1 = b - a, e2 = c - a;
-  const float cross2 = glm::dot(glm::cross(e1, e2), glm::cross(e1, e2));
-  const float scale2 = glm::dot(e1, e1) * glm::dot(e2, e2);
-  // |e1 x e2|^2 = |e1|^2 |e2|^2 sin^2(angle): relative test, independent of the mesh's units.
-  return !(cross2 > 1e-12f * scale2) || scale2 == 0.0f;
+  // In double, where no float coordinate's square or fourth power overflows or underflows: legs of
+  // 5e9 overflowed |e1|^2 |e2|^2 in float and a valid triangle was dropped.
+  const glm::dvec3 e1 = glm::dvec3(b) - glm::dvec3(a), e2 = glm::dvec3(c) - glm::dvec3(a);
+  const glm::dvec3 n = glm::cross(e1, e2);
+  const double cross2 = glm::dot(n, n);
+  const double scale2 = glm::dot(e1, e1) * glm::dot(e2, e2);
+  // |e1 x e2|^2 = |e1|^2 |e2|^2 sin^2(angle): relative to the triangle's own size, so scaling a mesh
+  // (any units) never changes which of its triangles are degenerate.
+  return !(cross2 > 1e-12 * scale2) || scale2 == 0.0;
 }
 
 std::size_t remove_degenerate_triangles(Mesh& mesh) {

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/untrusted_text.h"
 #include "scene/default_walkthrough.h"
 #include "scene/file_text.h"
 #include "scene/mesh_ops.h"
@@ -65,8 +66,9 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   const std::string tinyobj_text = library.materials.empty() ? text : "mtllib glint-materials\n" + text;
   // The validation pass has rejected everything tinyobjloader is known to fail on; this is a backstop.
   if (!reader.ParseFromString(tinyobj_text, names_as_mtl_text(library), config))
-    fail("{}: {}", file_label, reader.Error().empty() ? "tinyobjloader could not parse the file" : reader.Error());
-  if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, reader.Warning());
+    fail("{}: {}", file_label,
+         reader.Error().empty() ? "tinyobjloader could not parse the file" : untrusted_text(reader.Error()));
+  if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, untrusted_text(reader.Warning()));
 
   std::vector<ObjMeshPart> parts =
       assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), library_index_of_tinyobj_ids(reader.GetMaterials(), library),

@@ -1,6 +1,7 @@
 #include "scene/obj_validation.h"
 
 #include "core/error.h"
+#include "core/untrusted_text.h"
 #include "scene/obj_text_parsing.h"
 
 #include <algorithm>
@@ -79,8 +80,8 @@ void ObjTextValidator::check_numbers(std::string_view keyword, std::string_view 
   int count = 0;
   for (std::string_view token = take_token(rest); !token.empty(); token = take_token(rest)) {
     const std::optional<float> value = parse_float(token);
-    if (!value) fail_here("'{}' line: '{}' is not a number", keyword, token);
-    if (!std::isfinite(*value)) fail_here("'{}' line: '{}' is not a finite number", keyword, token);
+    if (!value) fail_here("'{}' line: '{}' is not a number", keyword, untrusted_text(token));
+    if (!std::isfinite(*value)) fail_here("'{}' line: '{}' is not a finite number", keyword, untrusted_text(token));
     ++count;
   }
   if (count < min_count || count > max_count)
@@ -88,12 +89,18 @@ void ObjTextValidator::check_numbers(std::string_view keyword, std::string_view 
 }
 
 void ObjTextValidator::check_element_list(std::string_view keyword, std::string_view rest, int min_vertices) {
-  int count = 0;
+  std::size_t count = 0;
   for (std::string_view token = take_token(rest); !token.empty(); token = take_token(rest)) {
+    // tinyobjloader's triangulation is quadratic in a face's vertices (a 20,000-vertex face took
+    // seconds, 200,000 minutes): refuse large faces before it sees them.
+    if (keyword == "f" && count == kMaxObjFaceVertices)
+      fail_here("the face has more than {} vertices, glint's limit per face; triangulate the model (or split the "
+                "polygon) when exporting it",
+                kMaxObjFaceVertices);
     check_vertex_reference(token);
     ++count;
   }
-  if (count < min_vertices)
+  if (count < static_cast<std::size_t>(min_vertices))
     fail_here("'{}' line has {} vertex reference{}, at least {} needed", keyword, count, count == 1 ? "" : "s",
               min_vertices);
 }
@@ -104,19 +111,19 @@ void ObjTextValidator::check_vertex_reference(std::string_view reference) {
   int part_count = 0;
   std::string_view rest = reference;
   while (true) {
-    if (part_count == 3) fail_here("'{}' is not a vertex reference (v, v/vt, v//vn or v/vt/vn)", reference);
+    if (part_count == 3) fail_here("'{}' is not a vertex reference (v, v/vt, v//vn or v/vt/vn)", untrusted_text(reference));
     const std::size_t slash = rest.find('/');
     parts[part_count++] = rest.substr(0, slash);
     if (slash == std::string_view::npos) break;
     rest.remove_prefix(slash + 1);
   }
-  if (parts[0].empty()) fail_here("'{}' has no position index", reference);
+  if (parts[0].empty()) fail_here("'{}' has no position index", untrusted_text(reference));
   check_index(parts[0], summary_.position_count, "position", reference);
   // The middle index may be empty only in "v//vn"; tinyobjloader would fail on "v/" without a line.
-  if (part_count == 2 && parts[1].empty()) fail_here("'{}' has an empty texture coordinate index", reference);
+  if (part_count == 2 && parts[1].empty()) fail_here("'{}' has an empty texture coordinate index", untrusted_text(reference));
   if (part_count >= 2 && !parts[1].empty()) check_index(parts[1], summary_.texcoord_count, "texture coordinate", reference);
   if (part_count == 3) {
-    if (parts[2].empty()) fail_here("'{}' has an empty normal index", reference);
+    if (parts[2].empty()) fail_here("'{}' has an empty normal index", untrusted_text(reference));
     check_index(parts[2], summary_.normal_count, "normal", reference);
   }
 }
@@ -124,13 +131,13 @@ void ObjTextValidator::check_vertex_reference(std::string_view reference) {
 void ObjTextValidator::check_index(std::string_view index_text, std::size_t defined, std::string_view element,
                                    std::string_view reference) {
   const std::optional<long long> index = parse_integer(index_text);
-  if (!index) fail_here("'{}': '{}' is not an integer index", reference, index_text);
-  if (*index == 0) fail_here("'{}': index 0 is invalid (OBJ indices start at 1, or count back from -1)", reference);
+  if (!index) fail_here("'{}': '{}' is not an integer index", untrusted_text(reference), untrusted_text(index_text));
+  if (*index == 0) fail_here("'{}': index 0 is invalid (OBJ indices start at 1, or count back from -1)", untrusted_text(reference));
   const auto defined_count = static_cast<long long>(defined);
   if (*index > defined_count)
-    fail_here("'{}': {} {} is out of range ({} defined before this line)", reference, element, *index, defined);
+    fail_here("'{}': {} {} is out of range ({} defined before this line)", untrusted_text(reference), element, *index, defined);
   if (*index < -defined_count)
-    fail_here("'{}': relative {} index {} is out of range ({} defined before this line)", reference, element, *index,
+    fail_here("'{}': relative {} index {} is out of range ({} defined before this line)", untrusted_text(reference), element, *index,
               defined);
 }
 

@@ -11,6 +11,12 @@
 
 namespace glint {
 
+// The most vertices an OBJ face ('f' line) may have (docs/scene-format.md, "Limits"): tinyobjloader
+// triangulates a polygon by ear clipping in time quadratic in its vertex count, so one crafted line
+// could hold glint for minutes. Real models' faces are triangles and quads, and n-gons of tens to
+// hundreds of vertices; a 1,024-vertex convex face triangulates in about 0.2 s (2-core machine).
+inline constexpr std::size_t kMaxObjFaceVertices = 1024;
+
 struct ObjLineReference {
   std::string name;
   std::size_t line = 0;
@@ -26,7 +32,8 @@ struct ObjTextSummary {
 };
 
 // Checks, line by line: `v` has 3 to 7 numbers (x y z [w] or x y z r g b) and a finite position;
-// `vt` has 1 to 3 finite numbers; `vn` has 3; `f` has at least 3 vertices, `l` 2 and `p` 1, each
+// `vt` has 1 to 3 finite numbers; `vn` has 3; `f` has 3 to kMaxObjFaceVertices vertices, `l` at
+// least 2 and `p` 1, each
 // "v", "v/vt", "v//vn" or "v/vt/vn" with indices that are not 0 and refer to an element defined
 // before the line (negative indices count back from the last one); `usemtl` and `mtllib` name
 // something. Other statements (o, g, s, comments, ...) are left to tinyobjloader. Throws if the file

@@ -1,5 +1,6 @@
 #include "scene/scene_json_parser.h"
 
+#include "core/untrusted_text.h"
 #include "scene/json_field.h"
 
 #include <algorithm>
@@ -10,6 +11,7 @@ namespace glint {
 namespace {
 
 constexpr float kHuge = std::numeric_limits<float>::max();
+constexpr std::size_t kMaxPathBytes = 4096;  // Linux's PATH_MAX
 
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -26,7 +28,7 @@ int parse_axis(const JsonField& field) {
   if (name == "x") return 0;
   if (name == "y") return 1;
   if (name == "z") return 2;
-  field.error("unknown axis \"{}\" (expected \"x\", \"y\" or \"z\")", name);
+  field.error("unknown axis \"{}\" (expected \"x\", \"y\" or \"z\")", untrusted_text(name));
 }
 
 vec3 parse_color(const JsonField& field) {
@@ -65,7 +67,7 @@ MaterialOverrides parse_material_overrides(const JsonField& field) {
 SineDeform parse_deform(const JsonField& field) {
   field.require_object({"type", "axis", "along", "amplitude", "frequency", "speed"});
   const JsonField type = field.at("type");
-  if (type.string() != "sine") type.error("unknown deformer \"{}\" (expected \"sine\")", type.string());
+  if (type.string() != "sine") type.error("unknown deformer \"{}\" (expected \"sine\")", untrusted_text(type.string()));
   SineDeform deform;
   if (auto f = field.find("axis")) deform.displace_axis = parse_axis(*f);
   if (auto f = field.find("along")) deform.wave_axis = parse_axis(*f);
@@ -82,10 +84,17 @@ MeshEntry parse_mesh_entry(const JsonField& field) {
   const JsonField file = field.at("file");
   const std::string file_text = file.string();
   if (file_text.empty()) file.error("empty file name");
+  // The path reaches every message of the mesh's loader; one that no file system could open, or with
+  // control characters, is a mistake (or an attack on the terminal) caught here, shown escaped.
+  if (file_text.size() > kMaxPathBytes)
+    file.error("the file name is {} bytes long (at most {}): \"{}\"", file_text.size(), kMaxPathBytes,
+               untrusted_text(file_text));
+  if (std::ranges::any_of(file_text, [](unsigned char c) { return c < 0x20 || c == 0x7F; }))
+    file.error("the file name \"{}\" contains control characters", untrusted_text(file_text));
   // Checked here, not when loading, so that the whole file is vetted before any mesh is read.
   const std::string lower = lowercase(file_text);
   if (!ends_with(lower, ".obj") && !ends_with(lower, ".gltf") && !ends_with(lower, ".glb"))
-    file.error("unsupported mesh file \"{}\" (expected .obj, .gltf or .glb)", file_text);
+    file.error("unsupported mesh file \"{}\" (expected .obj, .gltf or .glb)", untrusted_text(file_text));
   entry.file = file_text;
   entry.name = std::filesystem::path(file_text).stem().string();
   if (auto f = field.find("name")) {

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/untrusted_text.h"
+#include "scene/jpeg_huffman_check.h"
 
 #include <stb/stb_image.h>
 
@@ -40,12 +41,6 @@ std::string_view format_name(std::span<const unsigned char> bytes) {
   return "image";
 }
 
-// stb_image's reason, which is short and sometimes empty or about another format than the file's.
-std::string stb_reason() {
-  const char* reason = stbi_failure_reason();
-  return reason != nullptr && *reason != '\0' ? fmt::format(" (stb_image: {})", reason) : std::string();
-}
-
 std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) fail("cannot open the file");
@@ -68,11 +63,13 @@ Texture decode_texture(std::span<const unsigned char> encoded, const std::string
     fail("{} bytes is more than any texture within glint's limit", encoded.size());
   const std::string_view format = format_name(encoded);
   const int size = static_cast<int>(encoded.size());
+  check_jpeg_huffman_tables(encoded);  // before stb_image reads any JPEG segment (jpeg_huffman_check.h)
   int width = 0, height = 0, channels_in_file = 0;
   if (stbi_info_from_memory(encoded.data(), size, &width, &height, &channels_in_file) == 0) {
-    if (format == "image")
-      fail("not an image glint can read (PNG, JPEG, TGA, BMP, GIF, PSD, HDR, PIC or PNM){}", stb_reason());
-    fail("the {} header is damaged or uses a variant glint cannot read{}", format, stb_reason());
+    // stb_image's own reason is left out: it is the last format it tried that set it, so a damaged
+    // JPEG reads "bad png sig".
+    if (format == "image") fail("not an image glint can read (PNG, JPEG, TGA, BMP, GIF, PSD, HDR, PIC or PNM)");
+    fail("the {} header is damaged or uses a variant glint cannot read", format);
   }
   const std::uint64_t texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
   if (width <= 0 || height <= 0 || texels > kMaxTextureTexels)
@@ -85,7 +82,7 @@ Texture decode_texture(std::span<const unsigned char> encoded, const std::string
   const std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
       stbi_load_from_memory(encoded.data(), size, &decoded_width, &decoded_height, &channels_in_file, 4),
       &stbi_image_free);
-  if (!pixels) fail("the {} data is damaged or uses a variant glint cannot read{}", format, stb_reason());
+  if (!pixels) fail("the {} data is damaged or uses a variant glint cannot read", format);
   if (decoded_width != width || decoded_height != height)  // the header was read twice: never expected to differ
     fail("the {} decoded as {} x {} texels, but its header says {} x {}", format, decoded_width, decoded_height, width, height);
   Texture texture;

@@ -3,6 +3,9 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
+#include <vector>
+
 namespace glint {
 namespace {
 
@@ -128,6 +131,38 @@ TEST(MeshOps, DegeneracyIsRelativeToTheTriangleSize) {
   EXPECT_FALSE(is_degenerate_triangle(vec3(0.0f), vec3(1e4f, 0, 0), vec3(0, 1e4f, 0)));
   EXPECT_TRUE(is_degenerate_triangle(vec3(0.0f), vec3(1, 0, 0), vec3(0.5f, 1e-7f, 0)));
   EXPECT_TRUE(is_degenerate_triangle(vec3(1.0f), vec3(1.0f), vec3(1.0f)));
+}
+
+TEST(MeshOps, HugeAndTinyValidTrianglesAreNotDegenerate) {
+  // Legs of 5e9: |e1|^2 |e2|^2 = 6.25e38 overflowed float, and the triangle was dropped as "zero-area".
+  EXPECT_FALSE(is_degenerate_triangle(vec3(0.0f), vec3(5e9f, 0, 0), vec3(0, 5e9f, 0)));
+  EXPECT_FALSE(is_degenerate_triangle(vec3(0.0f), vec3(1e30f, 0, 0), vec3(0, 1e30f, 0)));
+  // Legs of 1e-12: the same product underflowed to 0 in float.
+  EXPECT_FALSE(is_degenerate_triangle(vec3(0.0f), vec3(1e-12f, 0, 0), vec3(0, 1e-12f, 0)));
+  // Their normals survive too (the cross product's length overflowed from legs of about 1e9).
+  Mesh mesh;
+  mesh.positions = {vec3(0.0f), vec3(5e9f, 0, 0), vec3(0, 5e9f, 0)};
+  mesh.indices = {0, 1, 2};
+  EXPECT_EQ(remove_degenerate_triangles(mesh), 0u);
+  compute_smooth_normals(mesh);
+  EXPECT_NEAR(mesh.normals[0].z, 1.0f, 1e-6f);
+  compute_flat_normals(mesh);
+  EXPECT_NEAR(mesh.normals[0].z, 1.0f, 1e-6f);
+}
+
+TEST(MeshOps, ScalingAMeshDoesNotChangeWhichTrianglesAreDegenerate) {
+  // Well-shaped, thin but valid (apex 1e-5 of the length off the line), slivers (1e-7) and a
+  // repeated point, at scales from 1e-12 to 1e12 (a scene in km or in micrometres): the same verdicts.
+  const std::vector<std::array<vec3, 3>> triangles = {
+      {vec3(0, 0, 0), vec3(1, 0, 0), vec3(0, 1, 0)},      {vec3(0, 0, 0), vec3(1, 0, 0), vec3(0.5f, 1e-5f, 0)},
+      {vec3(0, 0, 0), vec3(1, 0, 0), vec3(0.5f, 1e-7f, 0)}, {vec3(0.3f, 0.2f, 0.1f), vec3(0.3f, 0.2f, 0.1f), vec3(1, 1, 1)},
+      {vec3(1, 2, 3), vec3(4, -5, 6), vec3(-7, 8, 9)}};
+  const std::vector<bool> expected = {false, false, true, true, false};
+  for (const float scale : {1e-12f, 1e-3f, 1.0f, 1e3f, 5e9f, 1e12f})
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const auto& [a, b, c] = triangles[t];
+      EXPECT_EQ(is_degenerate_triangle(a * scale, b * scale, c * scale), expected[t]) << "triangle " << t << " x " << scale;
+    }
 }
 
 }  // namespace

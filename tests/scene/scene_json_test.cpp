@@ -342,13 +342,39 @@ TEST(SceneJsonAssets, FindAssetsDirPrefersOptionThenEnvironmentThenSceneEntry) {
     ScopedEnv env("GLINT_ASSETS", (folder.path() / "env").string());
     EXPECT_EQ(find_assets_dir(options, scene_entry), folder.path() / "option");
     EXPECT_EQ(find_assets_dir({}, scene_entry), folder.path() / "env");
-    options.assets_dir = folder.path() / "missing";  // a missing folder is skipped
-    EXPECT_EQ(find_assets_dir(options, scene_entry), folder.path() / "env");
   }
   {
     ScopedEnv env("GLINT_ASSETS", std::nullopt);
     EXPECT_EQ(find_assets_dir({}, scene_entry), folder.path() / "scene");
   }
+}
+
+TEST(SceneJsonAssets, ANamedFolderThatDoesNotExistIsAnErrorSayingWhereItWasGiven) {
+  // Before, each was skipped and glint went on to the next candidate, down to ../shared/assets.
+  TempFolder folder;
+  for (const char* name : {"env", "scene"}) std::filesystem::create_directories(folder.path() / name);
+  LoadOptions options;
+  options.assets_dir = folder.path() / "option-missing";
+  {
+    ScopedEnv env("GLINT_ASSETS", (folder.path() / "env").string());
+    const std::string message = error_of([&] { find_assets_dir(options, folder.path() / "scene"); });
+    EXPECT_NE(message.find("option-missing', given by the assets option (--assets), is not a folder"), std::string::npos)
+        << message;
+  }
+  {
+    ScopedEnv env("GLINT_ASSETS", (folder.path() / "env-missing").string());
+    const std::string message = error_of([&] { find_assets_dir({}, folder.path() / "scene"); });
+    EXPECT_NE(message.find("env-missing', given by $GLINT_ASSETS, is not a folder"), std::string::npos) << message;
+  }
+  ScopedEnv env("GLINT_ASSETS", std::nullopt);
+  const std::string message = error_of([&] { find_assets_dir({}, folder.path() / "scene-missing"); });
+  EXPECT_NE(message.find("scene-missing', given by the scene's \"assets\" entry, is not a folder"), std::string::npos)
+      << message;
+  // Through a scene file: the error names the file and its /assets entry.
+  const std::string scene = R"({"assets": "no-such-folder", "meshes": [{"file": "m.gltf"}]})";
+  const std::string loaded = error_of([&] { load_scene_json_text(scene, folder.path() / "x.scene.json"); });
+  EXPECT_NE(loaded.find("x.scene.json: /assets: assets folder not found: '"), std::string::npos) << loaded;
+  EXPECT_NE(loaded.find("no-such-folder', given by the scene's \"assets\" entry"), std::string::npos) << loaded;
 }
 
 TEST(SceneJsonAssets, FindAssetsDirListsEveryPlaceItLookedWhenNoneExists) {
@@ -362,14 +388,12 @@ TEST(SceneJsonAssets, FindAssetsDirListsEveryPlaceItLookedWhenNoneExists) {
     std::filesystem::current_path(previous);
     GTEST_SKIP() << "a shared/assets folder exists beside the test executable";
   }
-  ScopedEnv env("GLINT_ASSETS", (folder.path() / "env-missing").string());
-  LoadOptions options;
-  options.assets_dir = folder.path() / "option-missing";
-  const std::string message = error_of([&] { find_assets_dir(options, folder.path() / "scene-missing"); });
+  ScopedEnv env("GLINT_ASSETS", std::nullopt);
+  const std::string message = error_of([&] { find_assets_dir({}, std::nullopt); });
   std::filesystem::current_path(previous);
   EXPECT_EQ(message.find('\n'), std::string::npos);  // one line
-  for (const std::string part : {"assets folder not found", "option-missing", "env-missing", "scene-missing",
-                                 "shared/assets (from the current directory)", "executable", "GLINT_ASSETS"})
+  for (const std::string part : {"assets folder not found", "shared/assets (from the current directory)", "executable",
+                                 "GLINT_ASSETS"})
     EXPECT_NE(message.find(part), std::string::npos) << part << " not in: " << message;
 }
 

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "scene/scene.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -89,6 +90,57 @@ TEST(SceneValidate, RefusesADeformableMeshWithoutDeformerAndABadWalkthrough) {
   const std::string message = validation_error(scene);
   EXPECT_NE(message.find("test.scene.json: "), std::string::npos) << message;
   EXPECT_NE(message.find("camera"), std::string::npos) << message;
+}
+
+TEST(SceneValidate, RefusesInstanceTransformsTheRayTracersCannotUseNamingTheSceneFile) {
+  // These reached the acceleration structures and failed there as "accel: ..." with no file named.
+  {
+    Scene scene = one_triangle_scene();
+    scene.instances[0].transform = glm::scale(mat4(1.0f), vec3(1e-30f));  // determinant 1e-90: 0 in float
+    const std::string message = validation_error(scene);
+    EXPECT_NE(message.find("test.scene.json: instance 'tri': the transform cannot be inverted in float"),
+              std::string::npos) << message;
+  }
+  {
+    Scene scene = one_triangle_scene();
+    scene.instances[0].transform = glm::scale(mat4(1.0f), vec3(1e-13f));  // invertible, inverse 1e39 is not finite
+    EXPECT_NE(validation_error(scene).find("cannot be inverted in float"), std::string::npos);
+  }
+  {
+    Scene scene = one_triangle_scene();
+    scene.instances[0].transform[0][1] = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_NE(validation_error(scene).find("test.scene.json: instance 'tri': the transform is not finite"),
+              std::string::npos);
+  }
+  {
+    Scene scene = one_triangle_scene();
+    scene.meshes[0].positions[1] = vec3(3e38f, 0, 0);
+    scene.instances[0].transform = glm::scale(mat4(1.0f), vec3(10.0f));  // 3e39: past float
+    const std::string message = validation_error(scene);
+    EXPECT_NE(message.find("test.scene.json: instance 'tri': vertex 1 of mesh 'tri' is not finite after the "
+                           "instance transform"),
+              std::string::npos) << message;
+  }
+  {
+    Scene scene = one_triangle_scene();
+    scene.instances[0].transform = glm::scale(mat4(1.0f), vec3(1e30f));  // determinant 1e90: inf, inverse all zero
+    EXPECT_NE(validation_error(scene).find("cannot be inverted in float"), std::string::npos);
+  }
+  for (const float scale : {1e-9f, 1e9f}) {  // large or small but invertible worlds stay valid
+    Scene scene = one_triangle_scene();
+    scene.instances[0].transform = glm::scale(mat4(1.0f), vec3(scale));
+    EXPECT_EQ(validation_error(scene), "") << scale;
+  }
+}
+
+TEST(SceneValidate, NamesFromFilesAreShownEscapedAndBounded) {
+  Scene scene = one_triangle_scene();
+  scene.instances[0].name = std::string(5'000'000, 'n') + "\x1b[31m";
+  scene.instances[0].mesh = 7;
+  const std::string message = validation_error(scene);
+  EXPECT_LT(message.size(), 500u);
+  EXPECT_NE(message.find("(5000005 bytes in all)"), std::string::npos);
+  EXPECT_EQ(message.find('\x1b'), std::string::npos);
 }
 
 }  // namespace
