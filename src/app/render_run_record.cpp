@@ -1,6 +1,7 @@
 #include "app/render_run_record.h"
 
 #include "core/atomic_file.h"
+#include "core/untrusted_text.h"
 #include "core/utc_timestamp.h"
 #include "render/frame_pipeline.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 
 nlohmann::json scene_summary(const Scene& scene) {
-  return {{"name", scene.name},
+  return {{"name", untrusted_text(scene.name)},  // from the scene file: bounded, escaped
           {"source", scene.source},
           {"meshes", scene.meshes.size()},
           {"instances", scene.instances.size()},
