@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <optional>
+#include <system_error>
 #include <string_view>
 
 namespace glint {
@@ -41,9 +42,11 @@ std::optional<std::string> json_text(const std::filesystem::path& path) {
   const std::optional<std::uint32_t> version = read_word(), total = read_word(), chunk_length = read_word(),
                                      chunk_type = read_word();
   if (!version || !total || !chunk_length || chunk_type != 0x4E4F534Au) return std::nullopt;  // "JSON"
-  // The chunk must lie inside the length the header declares, so a crafted length cannot make this
-  // allocate more than the file claims to hold; the read below then stops at the real end of file.
-  if (*chunk_length > *total || *total - *chunk_length < 20) return std::nullopt;
+  // The chunk must lie inside the file (not only inside the length its header declares), so a crafted
+  // length cannot make this allocate more than the file holds.
+  std::error_code error;
+  const std::uintmax_t file_bytes = std::filesystem::file_size(path, error);
+  if (error || file_bytes < 20 || *chunk_length > file_bytes - 20) return std::nullopt;
   std::string text(*chunk_length, '\0');
   if (!file.read(text.data(), static_cast<std::streamsize>(text.size()))) return std::nullopt;
   return text;

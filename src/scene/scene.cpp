@@ -51,12 +51,11 @@ bool is_finite_matrix(const mat4& m) {
   return true;
 }
 
-// The first vertex of `mesh` whose world position under `transform` (computed as the ray tracers'
-// scene_geometry does, in float) is not finite, or nullopt. A mesh whose bounding box corners all
-// map to finite points has none (each coordinate is affine in the position, largest at a corner),
-// so the per-vertex pass runs only to find the culprit.
-std::optional<std::size_t> first_non_finite_world_vertex(const Mesh& mesh, const mat4& transform) {
-  const Aabb box = mesh.bounds();
+// The first vertex of `mesh` (whose bounds are `box`) whose world position under `transform`
+// (computed as the ray tracers' scene_geometry does, in float) is not finite, or nullopt. A mesh whose
+// bounding box corners all map to finite points has none (each coordinate is affine in the position,
+// largest at a corner), so the per-vertex pass runs only to find the culprit.
+std::optional<std::size_t> first_non_finite_world_vertex(const Mesh& mesh, const Aabb& box, const mat4& transform) {
   bool corners_finite = true;
   for (int corner = 0; corner < 8; ++corner) {
     const vec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
@@ -101,6 +100,9 @@ void Scene::validate() const {
     if (material.diffuse_texture >= static_cast<int>(textures.size()))
       fail("{}: material '{}': texture {} out of range ({} textures)", source, untrusted_text(material.name),
            material.diffuse_texture, textures.size());
+  std::vector<Aabb> mesh_bounds;  // once per mesh, not per instance
+  mesh_bounds.reserve(meshes.size());
+  for (const Mesh& mesh : meshes) mesh_bounds.push_back(mesh.bounds());
   for (const Instance& instance : instances) {
     const auto shown_name = [&instance] { return untrusted_text(instance.name); };
     if (instance.mesh >= meshes.size())
@@ -115,7 +117,7 @@ void Scene::validate() const {
     if (determinant == 0.0f || !std::isfinite(determinant) || !is_finite_matrix(glm::inverse(m)))
       fail("{}: instance '{}': the transform cannot be inverted in float (its determinant is {})", source, shown_name(),
            determinant);
-    if (const std::optional<std::size_t> v = first_non_finite_world_vertex(meshes[instance.mesh], m))
+    if (const std::optional<std::size_t> v = first_non_finite_world_vertex(meshes[instance.mesh], mesh_bounds[instance.mesh], m))
       fail("{}: instance '{}': vertex {} of mesh '{}' is not finite after the instance transform (the transform "
            "scales or moves it beyond float range)",
            source, shown_name(), *v, untrusted_text(meshes[instance.mesh].name));
