@@ -46,6 +46,10 @@ constexpr int kViewRaysPerSide = 5;      // view rays per candidate camera posit
 constexpr float kAspect = 16.0f / 9.0f;  // the default image, 1280x720
 constexpr int kLightSamples = 192;       // most camera-seen points a light candidate is tested against
 constexpr float kClearlyBetter = 0.05f;  // a later candidate must beat an earlier one by this much
+// Some 10^5 probe rays place the walkthrough. Above this SAH cost per ray (geometry that overlaps
+// itself everywhere, a crafted file: real scenes cost 60 to 90, the atrium, Sponza and the Dabrovic
+// Sponza alone) that would take seconds to minutes, so the classic candidates are taken unchecked.
+constexpr double kMostRayCost = 1000.0;
 constexpr float kGoodEnough = 0.95f;     // a candidate this good ends the search (none can be clearly better)
 
 // Points spread evenly over the unit sphere (a Fibonacci spiral), the same every time.
@@ -404,6 +408,18 @@ void assign_default_walkthrough(Scene& scene, const std::optional<CameraPathSpec
   const SceneFrame frame = scene_frame(scene);
   if (frame.bounds.empty() || !(frame.diagonal > 0.0f) || !std::isfinite(frame.diagonal)) return;
   const SceneRayProbe probe(scene);
+  if (probe.ray_cost() > kMostRayCost) {
+    log_warning("{}: the geometry overlaps itself so much (SAH cost {:.0f} per ray) that the default camera and "
+                "light are placed from the scene's bounds alone, unchecked",
+                scene.source, probe.ray_cost());
+    if (camera) scene.walkthrough.camera = *camera;
+    else scene.walkthrough.camera = camera_path(camera_candidates(frame).front(), frame.fov_y_degrees);
+    const std::vector<LightCandidate> lights = light_candidates(frame, {});
+    scene.walkthrough.light.points = {lights.front().positions.front(), lights.front().positions.back()};
+    scene.light.position = 0.5f * (lights.front().positions.front() + lights.front().positions.back());
+    scene.light.range = frame.diagonal;
+    return;
+  }
 
   if (camera) {
     scene.walkthrough.camera = *camera;

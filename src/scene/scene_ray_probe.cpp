@@ -1,6 +1,7 @@
 #include "scene/scene_ray_probe.h"
 
 #include "accel/builder.h"
+#include "accel/bvh_stats.h"
 #include "accel/trace.h"
 #include "accel/triangle_mesh.h"
 
@@ -35,6 +36,7 @@ SceneRayProbe::SceneRayProbe(const Scene& scene) {
   }
   remove_duplicate_triangles();
   bvh_ = accel::build_bvh(accel::BvhBuilder::sah, accel::make_triangle_soup(corners_));
+  ray_cost_ = accel::compute_stats(bvh_).sah_cost;
 }
 
 // Copies of one triangle in the same place (instances with the same transform, a face repeated in a

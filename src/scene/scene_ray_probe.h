@@ -33,6 +33,9 @@ public:
   std::vector<ProbeHit> closest(std::span<const accel::Ray> rays) const;
 
   const Aabb& bounds() const { return bounds_; }
+  // The BVH's SAH cost: about how many boxes and triangles a ray through the scene tests. Tens for
+  // real scenes; about the triangle count for geometry that overlaps itself everywhere.
+  double ray_cost() const { return ray_cost_; }
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners_.size() / 3); }
 
 private:
@@ -41,6 +44,7 @@ private:
   std::vector<vec3> corners_;  // three per world triangle
   Aabb bounds_;
   accel::Bvh bvh_;
+  double ray_cost_ = 0.0;
 };
 
 }  // namespace glint

@@ -2,6 +2,7 @@
 // free space seeing the geometry, the light outside solid objects lighting what the camera sees, for
 // an object on a floor, a lone triangle and a closed room, at their size and scaled by 1000 and moved
 // far from the origin.
+#include "core/log.h"
 #include "scene/camera_path.h"
 #include "scene/default_walkthrough.h"
 #include "scene/mesh_ops.h"
@@ -223,6 +224,25 @@ TEST(SceneRayProbe, KeepsOneCopyOfTrianglesInTheSamePlace) {
       probe.closest(std::vector<accel::Ray>{{vec3(0.2f, 0.5f, 0.2f), 0.0f, vec3(0, -1, 0), accel::kInfinity}});
   ASSERT_TRUE(hits[0].hit);
   EXPECT_NEAR(hits[0].distance, 0.5f, 1e-6f);
+}
+
+// Distinct triangles that all overlap (each crosses the whole scene) defeat any BVH: probing them
+// with 10^5 rays would take minutes for a few 10^4 of them, so the placement falls back to the bounds.
+TEST(DefaultWalkthrough, GeometryOverlappingItselfEverywhereFallsBackToTheBoundsWithAWarning) {
+  Mesh mesh;
+  for (int i = 0; i < 4000; ++i) {
+    const float angle = 0.0015f * static_cast<float>(i);
+    const vec3 along(std::cos(angle), 0.0f, std::sin(angle));
+    const auto first = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {-10.0f * along, 10.0f * along, vec3(0, 1, 0)});
+    mesh.indices.insert(mesh.indices.end(), {first, first + 1, first + 2});
+  }
+  TestScene t = make_scene(mesh, mat4(1.0f));
+  ScopedLogCapture log;
+  assign_default_walkthrough(t.scene);
+  EXPECT_EQ(log.count_warnings("overlaps itself so much"), 1);
+  EXPECT_NO_THROW(WalkthroughAnimation{t.scene});
+  EXPECT_EQ(t.scene.walkthrough.light.points.size(), 2u) << "the classic sweep";
 }
 
 }  // namespace
