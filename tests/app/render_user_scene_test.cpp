@@ -82,6 +82,20 @@ TEST(RenderFlags, HelpStatesThePreviewAndTheNewFlags) {
     EXPECT_NE(r.out.find(text), std::string::npos) << text;
 }
 
+TEST(RenderFlags, InfoShowsAFixedCamera) {
+  TempFolder folder;
+  folder.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const fs::path scene = folder.write(
+      "fixed.scene.json", R"({"meshes": [{"file": "tri.obj"}], "camera": {"position": [0.2, 0.3, 3], "target": [0.2, 0.3, 0]}})");
+  const CliResult text = run_glint("info " + quoted(scene));
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("camera    fixed at (0.20, 0.30, 3.00) looking at (0.20, 0.30, 0.00)"), std::string::npos)
+      << text.out;
+  const CliResult json = run_glint("info --json " + quoted(scene));
+  ASSERT_EQ(json.exit_code, 0) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["walkthrough"]["camera_fixed"], true);
+}
+
 // GlTest skips every test when this machine has no headless OpenGL 4.5 (the command would fail).
 using RenderUserScene = GlTest;
 
