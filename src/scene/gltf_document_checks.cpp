@@ -71,6 +71,43 @@ void check_each(const nlohmann::json& document, std::string_view array, std::ini
   }
 }
 
+// The non-negative integer at `object[key]`, `fallback` when absent, nullopt when not one.
+std::optional<std::uint64_t> unsigned_at(const nlohmann::json& object, std::string_view key, std::uint64_t fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_number_unsigned()) return std::nullopt;
+  return it->get<std::uint64_t>();
+}
+
+// tinygltf hands an image stored in a bufferView to the image decoder as (buffer data + byteOffset,
+// byteLength) without checking that range against the buffer (a heap over-read); buffers hold exactly
+// their declared byteLength (tinygltf checks that), so the declared sizes decide.
+void check_image_buffer_views(const nlohmann::json& document, const std::string& label) {
+  const auto images = document.find("images");
+  const auto views = document.find("bufferViews");
+  const auto buffers = document.find("buffers");
+  if (images == document.end() || !images->is_array()) return;
+  for (std::size_t i = 0; i < images->size(); ++i) {
+    const nlohmann::json& image = (*images)[i];
+    if (!image.is_object() || !image.contains("bufferView") || !image["bufferView"].is_number_unsigned()) continue;
+    const auto view_index = image["bufferView"].get<std::uint64_t>();
+    if (views == document.end() || !views->is_array() || view_index >= views->size()) continue;  // tinygltf reports it
+    const nlohmann::json& view = (*views)[view_index];
+    if (!view.is_object()) continue;
+    const std::optional<std::uint64_t> buffer_index = unsigned_at(view, "buffer", ~std::uint64_t{0});
+    const std::optional<std::uint64_t> offset = unsigned_at(view, "byteOffset", 0), length = unsigned_at(view, "byteLength", 0);
+    if (!buffer_index || !offset || !length || buffers == document.end() || !buffers->is_array() ||
+        *buffer_index >= buffers->size() || !(*buffers)[*buffer_index].is_object())
+      continue;
+    const std::optional<std::uint64_t> buffer_length = unsigned_at((*buffers)[*buffer_index], "byteLength", 0);
+    if (!buffer_length) continue;
+    if (*offset > *buffer_length || *length > *buffer_length - *offset)
+      fail("{}: images[{}]: bufferViews[{}] (byteOffset {}, byteLength {}) runs past the end of buffers[{}] ({} "
+           "bytes)",
+           label, i, view_index, *offset, *length, *buffer_index, *buffer_length);
+  }
+}
+
 }  // namespace
 
 void check_gltf_document(const std::filesystem::path& path, const std::string& label) {
@@ -93,6 +130,7 @@ void check_gltf_document(const std::filesystem::path& path, const std::string& l
     }
   check_each(document, "accessors", {"byteOffset", "count"}, label);
   check_each(document, "bufferViews", {"byteOffset"}, label);
+  check_image_buffer_views(document, label);
 }
 
 }  // namespace glint

@@ -14,7 +14,8 @@ inline constexpr const char* kSupportedRequiredGltfExtensions[] = {"KHR_mesh_qua
 
 // Throws a glint::Error "<label>: <JSON path>: <problem>" when the document requires an extension
 // not in kSupportedRequiredGltfExtensions, or an accessor's or bufferView's byteOffset (or an
-// accessor's count) is not a non-negative integer. `path` is a .gltf or a .glb (its JSON chunk is
+// accessor's count) is not a non-negative integer, or an image stored in a bufferView whose byte
+// range runs past its buffer (tinygltf would read past the buffer's end). `path` is a .gltf or a .glb (its JSON chunk is
 // read); a file whose JSON cannot be found or parsed is left to tinygltf, which reports it.
 void check_gltf_document(const std::filesystem::path& path, const std::string& label);
 

@@ -154,5 +154,22 @@ TEST(GltfHostileInput, ImagesAboveTheTextureLimitAreSkippedFromTheirHeaderWithAW
   EXPECT_EQ(log.count_warnings("JPEG header declares 20000 x 20000 texels, more than glint's limit"), 1);
 }
 
+TEST(GltfHostileInput, AnImageWhoseBufferViewRunsPastItsBufferIsAnError) {
+  // tinygltf passed the range to the image decoder unchecked: a heap over-read of up to 4 GB.
+  GltfBuilder gltf;
+  const int image = gltf.add_png_image(testing::encode_png(1, 1, {255, 0, 0, 255}));
+  gltf.add_mesh_node({{"attributes", {{"POSITION", gltf.add_vec3(testing::unit_triangle())}}}});
+  const int view = gltf.json["images"][image]["bufferView"];
+  gltf.json["bufferViews"][view]["byteLength"] = 1'000'000;
+  TempFolder folder;
+  for (const char* name : {"over.gltf", "over.glb"}) {
+    const std::filesystem::path file =
+        std::string(name) == "over.glb" ? folder.write(name, gltf.glb()) : folder.write(name, gltf.gltf_text());
+    expect_contains(error_of([&] { load_gltf(file); }),
+                    {std::string(name) + ": images[0]: bufferViews[0] (byteOffset 0, byteLength 1000000) runs past "
+                                         "the end of buffers[0]"});
+  }
+}
+
 }  // namespace
 }  // namespace glint
