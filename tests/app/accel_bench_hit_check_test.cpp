@@ -105,6 +105,18 @@ TEST(AccelBenchHitRule, ScalesWithTheScenesCoordinatesNotWithT) {
   accel::Hit just_after = at_origin;
   just_after.t = 1.4e-7f;
   EXPECT_FALSE(hit_disagreement(in_plane, at_origin, just_after, hit_geometry(square.view())));
+  // ... or at t = -1e-7 in another structure: a miss, or the next hit behind.
+  const accel::Hit miss;
+  accel::Hit behind = at_origin;
+  behind.prim = 0;
+  behind.t = 5.0f;
+  EXPECT_FALSE(hit_disagreement(in_plane, at_origin, miss, hit_geometry(square.view())));
+  EXPECT_FALSE(hit_disagreement(in_plane, miss, just_after, hit_geometry(square.view())));
+  EXPECT_FALSE(hit_disagreement(in_plane, behind, just_after, hit_geometry(square.view())));
+  accel::Hit clear_of_origin = at_origin;
+  clear_of_origin.t = 0.1f;
+  EXPECT_TRUE(hit_disagreement(in_plane, clear_of_origin, miss, hit_geometry(square.view())));
+  EXPECT_TRUE(hit_disagreement(in_plane, behind, clear_of_origin, hit_geometry(square.view())));
 }
 
 // A structure that misses a hit lying on its triangle's edge (within single precision) is counted
@@ -202,27 +214,44 @@ INSTANTIATE_TEST_SUITE_P(AccelBench, AccelBenchFarFromOrigin,
                          ::testing::Values(RayKind::primary, RayKind::reflection, RayKind::random),
                          [](const ::testing::TestParamInfo<RayKind>& param) { return std::string(ray_kind_name(param.param)); });
 
-// A lone plane: the default walkthrough puts the camera in the plane (at a third of its zero
-// height), so the primary rays that go down hit it at t = 0 give or take float rounding.
-TEST(AccelBenchPlane, PrimaryRaysFromInsideThePlaneAgree) {
-  for (const float half : {1.0f, 10.0f, 1000.0f}) {
-    Scene scene;
-    scene.name = "plane";
-    scene.materials.emplace_back();
-    Mesh mesh;
-    mesh.name = "plane";
-    mesh.positions = {vec3(-half, 0, half), vec3(half, 0, half), vec3(half, 0, -half), vec3(-half, 0, -half)};
-    mesh.normals.assign(4, vec3(0, 1, 0));
-    mesh.indices = {0, 1, 2, 0, 2, 3};
-    scene.meshes.push_back(mesh);
-    scene.instances.push_back({"plane", 0, mat4(1.0f)});
-    scene.walkthrough.frame_count = 100;
-    assign_default_walkthrough(scene);
-    scene.validate();
-    const BenchReport report = run_accel_bench(scene, cpu_options(RayKind::primary));
-    EXPECT_GT(report.ray_hits, 0u) << half;
-    expect_every_check_passed(report);
+// A lone square plane seen by a camera inside it, so that every primary ray that goes down hits it
+// at t = 0 give or take float rounding (t 0 in one structure, 1.4e-7 in another, or just below 0,
+// i.e. a miss). Axis-aligned (a plane-only OBJ, whose default walkthrough puts the camera at a
+// third of the plane's zero height), and tilted and moved away, the camera on it by float rounding.
+Scene plane_scene(float half, const mat4& placement) {
+  Scene scene;
+  scene.name = "plane";
+  scene.materials.emplace_back();
+  Mesh mesh;
+  mesh.name = "plane";
+  mesh.positions = {vec3(-half, 0, half), vec3(half, 0, half), vec3(half, 0, -half), vec3(-half, 0, -half)};
+  mesh.normals.assign(4, vec3(0, 1, 0));
+  mesh.indices = {0, 1, 2, 0, 2, 3};
+  scene.meshes.push_back(mesh);
+  scene.instances.push_back({"plane", 0, placement});
+  scene.walkthrough.frame_count = 100;
+  assign_default_walkthrough(scene);
+  if (placement != mat4(1.0f)) {
+    const auto on_plane = [&](float x, float z) { return vec3(placement * vec4(x * half, 0.0f, z * half, 1.0f)); };
+    scene.walkthrough.camera.points = {on_plane(-0.6f, 0.5f), on_plane(0.1f, 0.3f), on_plane(0.5f, 0.45f)};
+    scene.walkthrough.camera.targets = {on_plane(0.2f, -0.7f)};
   }
+  scene.validate();
+  return scene;
+}
+
+TEST(AccelBenchPlane, PrimaryRaysFromInsideThePlaneAgree) {
+  const mat4 tilted_far = glm::rotate(glm::rotate(glm::translate(mat4(1.0f), vec3(1234.5f, 678.9f, -2345.6f)),
+                                                  glm::radians(20.0f), vec3(0, 1, 0)),
+                                      glm::radians(30.0f), vec3(1, 0, 0));
+  for (const mat4& placement : {mat4(1.0f), tilted_far})
+    for (const float half : {1.0f, 10.0f, 1000.0f}) {
+      Scene scene = plane_scene(half, placement);
+      const BenchReport report = run_accel_bench(scene, cpu_options(RayKind::primary));
+      EXPECT_GT(report.ray_hits, 0u) << half;
+      SCOPED_TRACE(fmt::format("half size {}, {}", half, placement == mat4(1.0f) ? "axis-aligned" : "tilted"));
+      expect_every_check_passed(report);
+    }
 }
 
 // Another triangle at a clearly different t is a real disagreement: counted for that structure

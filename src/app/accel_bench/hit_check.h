@@ -60,7 +60,10 @@ inline constexpr float kMinIncidenceCosine = 1e-3f;
 float hit_t_tolerance(const accel::Ray& ray, float magnitude, float incidence_cosine);
 
 // Why `actual` disagrees with `reference` on `ray`, or nullopt when they agree (above). A tie
-// (another triangle) is allowed the larger tolerance of the two triangles.
+// (another triangle) is allowed the larger tolerance of the two triangles. A hit within its
+// tolerance of the ray's t_min (or t_max) agrees with a miss, and a nearer hit within its tolerance
+// of t_min with a farther hit: the other structure may have computed that t just outside the range
+// (a camera inside a plane sees it at t = 0 in one structure and at t = -1e-7, a miss, in another).
 std::optional<std::string> hit_disagreement(const accel::Ray& ray, const accel::Hit& reference, const accel::Hit& actual,
                                             const HitGeometry& geometry);
 
