@@ -26,10 +26,12 @@ namespace {
 //    inside a room whose walls face the room, none do) and no surface is nearer than kClearance of
 //    the scene's diagonal;
 //  - a camera loop is scored by how much of the view its positions see geometry (a grid of view
-//    rays); every position of the loop must be in free space;
-//  - a light is scored by how well it lights the points the camera sees: the mean cosine of
-//    incidence, 0 where it is on the other side of the surface or something is in between (so a
-//    light grazing a floor scores low, one above it high); it must be in free space too. Lights that
+//    rays), less when the median view distance is under kCloseUp of the diagonal (a close-up of one
+//    surface); every position of the loop must be in free space;
+//  - a light is scored by how well it lights the points the camera sees: 0 where it is on the other
+//    side of the surface or something is in between, else 0.5 plus half the cosine of incidence (so
+//    lighting more counts most, and a light above a floor beats one grazing it); it must be in free
+//    space too. Lights that
 //    follow the camera, lifted above it, come first: a fixed light cannot light every side of an
 //    object the camera circles.
 // Candidates are tried in a fixed order, the earlier kept unless a later one is clearly better
@@ -44,7 +46,12 @@ constexpr int kLoopControlPoints = 12;   // the loop's spline points (closed by 
 constexpr std::size_t kInteriorLoops = 12;  // camera_candidates: 4 heights x 3 sizes inside the bounds
 constexpr int kViewRaysPerSide = 5;      // view rays per candidate camera position: 5 x 5
 constexpr float kAspect = 16.0f / 9.0f;  // the default image, 1280x720
-constexpr int kLightSamples = 192;       // most camera-seen points a light candidate is tested against
+constexpr float kCloseUp = 0.08f;        // median view distance, times the diagonal, below which a view is a close-up
+constexpr int kLightSamples = 192;
+// The default light's radiant intensity: with the renderer's albedo / pi diffuse term (docs/render.md)
+// a white surface facing it well within `range` (the diagonal) gets a radiance of about 1.5, which the
+// tone map keeps out of saturation. PointLight's own default (20) washes such a scene out to white.
+constexpr float kDefaultIntensity = 5.0f;       // most camera-seen points a light candidate is tested against
 constexpr float kClearlyBetter = 0.05f;  // a later candidate must beat an earlier one by this much
 // Some 10^5 probe rays place the walkthrough. Above this SAH cost per ray (geometry that overlaps
 // itself everywhere, a crafted file: real scenes cost 60 to 90, the atrium, Sponza and the Dabrovic
@@ -138,6 +145,7 @@ struct SeenPoint {
   std::uint32_t triangle;
   vec3 camera;
   std::size_t sample;  // index of the camera position that sees it
+  float distance;      // from the camera
 };
 
 // Where a camera is and what it looks at.
@@ -172,7 +180,7 @@ std::vector<SeenPoint> view_samples(const SceneRayProbe& probe, const SceneFrame
   for (std::size_t i = 0; i < hits.size(); ++i)
     if (hits[i].hit)
       seen.push_back({hits[i].point, hits[i].normal, hits[i].triangle, cameras[i / kRaysPerCamera].position,
-                      i / kRaysPerCamera});
+                      i / kRaysPerCamera, hits[i].distance});
   coverage = hits.empty() ? 0.0f : static_cast<float>(seen.size()) / static_cast<float>(hits.size());
   return seen;
 }
@@ -193,6 +201,7 @@ struct CameraLoop {
 struct LoopScore {
   int free = -1;          // positions in free space, of kLoopSamples
   float coverage = 0.0f;  // share of view rays that hit geometry
+  float view = 0.0f;      // coverage, less for a close-up (see score_loop)
 };
 
 bool clearly_better(int free, float score, int best_free, float best_score) {
@@ -209,7 +218,17 @@ LoopScore score_loop(const SceneRayProbe& probe, const SceneFrame& frame, const 
   LoopScore score;
   const std::vector<bool> free = in_free_space(probe, frame, positions);
   score.free = static_cast<int>(std::count(free.begin(), free.end(), true));
-  (void)view_samples(probe, frame, cameras, score.coverage);
+  std::vector<SeenPoint> seen = view_samples(probe, frame, cameras, score.coverage);
+  // A view filled by one surface at arm's length (a loop hugging an object) covers the frame but
+  // shows little: below a median distance of kCloseUp diagonals the score falls in proportion.
+  float closeness = 0.0f;
+  if (!seen.empty()) {
+    auto middle = seen.begin() + static_cast<std::ptrdiff_t>(seen.size() / 2);
+    std::nth_element(seen.begin(), middle, seen.end(),
+                     [](const SeenPoint& a, const SeenPoint& b) { return a.distance < b.distance; });
+    closeness = std::min(1.0f, middle->distance / (kCloseUp * frame.diagonal));
+  }
+  score.view = score.coverage * closeness;
   return score;
 }
 
@@ -261,8 +280,9 @@ std::vector<CameraView> camera_views(const CameraPathSpec& camera) {
   return views;
 }
 
-// How well a light at lights[i] lights seen[i]: the cosine of incidence when it is on the side the
-// camera sees and nothing is in between, else 0.
+// How well a light at lights[i] lights seen[i]: 0.5 + 0.5 * the cosine of incidence when it is on
+// the side the camera sees and nothing is in between, else 0. Lit at all counts most; lit head-on
+// rather than grazing breaks ties.
 std::vector<float> lighting(const SceneRayProbe& probe, const SceneFrame& frame, const std::vector<vec3>& lights,
                             const std::vector<const SeenPoint*>& seen) {
   std::vector<float> result(seen.size(), 0.0f);
@@ -288,7 +308,7 @@ std::vector<float> lighting(const SceneRayProbe& probe, const SceneFrame& frame,
     const ProbeHit& hit = hits[r];
     const SeenPoint& s = *seen[pair[r]];
     if (!hit.hit || hit.triangle == s.triangle || hit.distance >= distance[r] - frame.tolerance)
-      result[pair[r]] = std::abs(glm::dot(s.normal, rays[r].direction));
+      result[pair[r]] = 0.5f + 0.5f * std::abs(glm::dot(s.normal, rays[r].direction));
   }
   return result;
 }
@@ -395,7 +415,8 @@ void place_light(Scene& scene, const SceneRayProbe& probe, const SceneFrame& fra
   }
   scene.light.position = path.points.front();
   scene.light.range = frame.diagonal;
-  log_info("{}: default light: {} (candidate {} of {}), lighting what the camera sees at {:.0f} % (mean cosine)",
+  scene.light.intensity = kDefaultIntensity;
+  log_info("{}: default light: {} (candidate {} of {}), lighting score {:.0f} % of what the camera sees",
            scene.source,
            light.follows_camera ? "following the camera"
                                 : (light.positions.size() == 1 ? "fixed" : "sweeping"),
@@ -418,6 +439,7 @@ void assign_default_walkthrough(Scene& scene, const std::optional<CameraPathSpec
     scene.walkthrough.light.points = {lights.front().positions.front(), lights.front().positions.back()};
     scene.light.position = 0.5f * (lights.front().positions.front() + lights.front().positions.back());
     scene.light.range = frame.diagonal;
+  scene.light.intensity = kDefaultIntensity;
     return;
   }
 
@@ -429,11 +451,11 @@ void assign_default_walkthrough(Scene& scene, const std::optional<CameraPathSpec
     LoopScore best;
     for (std::size_t i = 0; i < loops.size(); ++i) {
       const LoopScore score = score_loop(probe, frame, loops[i]);
-      if (i == 0 || clearly_better(score.free, score.coverage, best.free, best.coverage)) {
+      if (i == 0 || clearly_better(score.free, score.view, best.free, best.view)) {
         chosen = i;
         best = score;
       }
-      if (best.free == kLoopSamples && best.coverage >= kGoodEnough) break;
+      if (best.free == kLoopSamples && best.view >= kGoodEnough) break;
     }
     scene.walkthrough.camera = camera_path(loops[chosen], frame.fov_y_degrees);
     log_info("{}: default camera: loop {} of {} ({}), {} of {} positions in free space, {:.0f} % of the view on "

