@@ -48,7 +48,11 @@ const uint kInvalidIndex = 0xFFFFFFFFu;
 
 // Bilinear sample of mip `level` of texture array layer `layer` at `uv`, wrapping (GL_REPEAT).
 vec3 bilinear_texel(int layer, vec2 uv, int level) {
-  const ivec2 size = textureSize(material_textures, level).xy;
+  // The level's size from level 0's rather than textureSize(material_textures, level): llvmpipe
+  // answers a size query for one lane's level in every lane of the SIMD group, and the lanes of a
+  // group hold rays in a run-dependent order, so frames differed from run to run
+  // (docs/reliability.md, "Deterministic frames").
+  const ivec2 size = max(textureSize(material_textures, 0).xy >> level, ivec2(1));
   const vec2 position = uv * vec2(size) - 0.5;
   const ivec2 base = ivec2(floor(position));
   const vec2 f = position - vec2(base);

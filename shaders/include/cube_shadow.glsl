@@ -35,7 +35,9 @@ const vec3 kCubeShadowPcfOffsets[20] = vec3[](
 // receiver_distance. The texel holds the occluder's distance along the face's axis, which is the
 // largest coordinate of `direction`; along the ray that is length / largest coordinate times more.
 float cube_shadow_lit(samplerCube shadow_cube, float near_distance, vec3 direction, float receiver_distance) {
-  float depth = texture(shadow_cube, direction).r;
+  // An explicit level: the map has one, and implicit derivatives are undefined outside fragment
+  // shaders (hit shading is a compute shader whose neighbouring lanes hold unrelated rays).
+  float depth = textureLod(shadow_cube, direction, 0.0).r;
   if (depth <= 0.0) return 1.0;  // nothing in this direction
   vec3 a = abs(direction);
   float occluder_distance = near_distance / depth * (length(direction) / max(a.x, max(a.y, a.z)));
