@@ -4,7 +4,7 @@
 # refit), times them with --timings-only, and compares ssr and hybrid against rt with `glint compare`.
 #   tools/hybrid_measure.sh OUT [--width W --height H --backend cpu|embree ...]
 # Extra arguments go to every `glint render`. GLINT (default: glint on PATH) names the binary.
-# Output: OUT/<run>/{timings.csv,run.json,frame_*.png} and OUT/compare/<frame>_<mode>_<deform>.json;
+# Runs replace earlier ones in OUT (--overwrite). Output: OUT/<run>/{timings.csv,run.json,frame_*.png} and OUT/compare/<frame>_<mode>_<deform>.json;
 # tools/hybrid_tables.py OUT prints the tables.
 set -euo pipefail
 out=${1:?usage: hybrid_measure.sh OUT [render options]}
@@ -16,7 +16,7 @@ mkdir -p "$out/compare"
 render() {  # render NAME ARGS...
   local name=$1
   shift
-  "$glint" render atrium --frames "$frames" --out "$out/$name" "$@"
+  "$glint" render atrium --frames "$frames" --overwrite --out "$out/$name" "$@"
 }
 
 # Images (PNG writes between frames) for the quality tables.
@@ -36,12 +36,12 @@ done
 timing_frames=1799,$frames
 for mode in off ssr hybrid rt; do
   "$glint" render atrium --frames "$timing_frames" --timings-only --reflections "$mode" --deform off \
-    --out "$out/timing-$mode-static" "$@"
+    --overwrite --out "$out/timing-$mode-static" "$@"
 done
 for mode in hybrid rt; do
   for update in rebuild refit; do
     "$glint" render atrium --frames "$timing_frames" --timings-only --reflections "$mode" --deform on \
-      --update "$update" --out "$out/timing-$mode-deform-$update" "$@"
+      --update "$update" --overwrite --out "$out/timing-$mode-deform-$update" "$@"
   done
 done
 echo "hybrid_measure: done, results in $out"

@@ -9,6 +9,7 @@
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
 #include "app/bench/resume.h"
+#include "core/interruption.h"
 #include "app/output_folder.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -262,6 +263,8 @@ int run_bench_command(const BenchOptions& given_options) {
   }
 
   const OutputFolder folder(out);
+  if (const std::size_t stale = remove_stale_temporaries(out); stale > 0)
+    log_warning("bench: removed {} temporary file(s) an earlier, killed run left in {}", stale, out.string());
   bench::write_run_settings(out, settings);
   HeadlessGlContext context;
   const bench::CellRunSettings cell_settings{options.width, options.height, options.warmup, options.shadow_map_size,
@@ -270,11 +273,22 @@ int run_bench_command(const BenchOptions& given_options) {
   for (const PlannedCell& planned : cells)
     if (planned.to_run) ticks += bench::cell_ticks(planned.cell, planned.frames.size(), cell_settings);
   ProgressBar progress("bench", ticks);
+  // Ctrl-C or SIGTERM stops the cell under way (its temporaries are removed as the stack unwinds);
+  // the finished cells' files stay, and the same command resumes from them.
+  const InterruptionScope interruptible;
+  std::size_t done = 0;
+  for (const PlannedCell& planned : cells) done += planned.outcome.resumed ? 1 : 0;
   for (PlannedCell& planned : cells) {
     if (!planned.to_run) continue;
     try {
       bench::run_cell(planned.cell, scenes.at(planned.cell.scene), planned.frames, cell_settings, context, out, progress);
       planned.outcome = {CellOutcome::State::done, "", false};
+      ++done;
+    } catch (const Interrupted&) {
+      progress.finish();
+      throw Interrupted(fmt::format("bench: interrupted by {} in cell {}; {} of {} cells are done in {}; the same "
+                                    "command resumes the run",
+                                    interruption_signal_name(), planned.cell.id, done, cells.size(), out.string()));
     } catch (const Error& error) {
       planned.outcome = {CellOutcome::State::failed, error.what(), false};
       log_warning("bench: cell {} failed: {}", planned.cell.id, error.what());

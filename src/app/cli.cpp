@@ -7,6 +7,7 @@
 #include "app/info_command.h"
 #include "app/render_command.h"
 #include "core/error.h"
+#include "core/interruption.h"
 #include "core/log.h"
 
 #include <CLI/CLI.hpp>
@@ -85,6 +86,9 @@ int run_cli(int argc, char** argv) {
       bench.command_line = command_line_text(argc, argv);
       return run_bench_command(bench);
     }
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "glint: %s\n", e.what());
+    return interrupted_exit_code();
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;

@@ -1,7 +1,9 @@
 #include "app/frame_loop.h"
 
 #include "core/error.h"
+#include "core/process_memory.h"
 #include "cuda/device_query.h"
+#include "gl/gpu_memory.h"
 #include "render/gpu_deformation.h"
 
 #include <epoxy/gl.h>
@@ -79,7 +81,9 @@ FrameMeasurement FrameLoop::run(int frame) {
           deform_times.deform_ms,
           deform_times.accel_update_ms,
           pipeline_.read_counts(),
-          pipeline_.ray_trace_stats()};
+          pipeline_.ray_trace_stats(),
+          resident_memory_bytes(),
+          gpu_memory_used_bytes()};
 }
 
 }  // namespace glint

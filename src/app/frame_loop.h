@@ -15,6 +15,7 @@
 #include "scene/scene.h"
 #include "scene/sine_deformer.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -33,6 +34,10 @@ struct FrameMeasurement {
   double accel_update_ms = 0.0;                         // the ray tracer's update of deformed meshes
   std::optional<render::SsrCounts> ssr_counts;          // with SSR
   std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
+  // Sampled after the frame, for long-run checks (docs/reliability.md): the process's resident memory
+  // and the GPU's memory in use (NVIDIA drivers only, see gl/gpu_memory.h).
+  std::optional<std::uint64_t> resident_bytes;
+  std::optional<std::uint64_t> gpu_memory_used_bytes;
 };
 
 struct FrameLoopOptions {

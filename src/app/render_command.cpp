@@ -8,6 +8,7 @@
 #include "app/video_writer.h"
 #include "core/csv_writer.h"
 #include "core/error.h"
+#include "core/interruption.h"
 #include "core/log.h"
 #include "core/progress_bar.h"
 #include "cuda/device_query.h"
@@ -206,7 +207,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   camera->needs(target);
   target->needs(camera);
   add_flat_normals_flag(*command, options.flat_normals);
-  command->add_option("--out", options.out, "Output folder (created if missing)")->capture_default_str();
+  command->add_option("--out", options.out,
+                      "Output folder (created if missing); a folder holding an earlier run is refused unless "
+                      "--overwrite")
+      ->capture_default_str();
+  command->add_flag("--overwrite", options.overwrite,
+                    "Replace the earlier run in --out: its frames, debug views, timings.csv, run.json and video are "
+                    "removed first (other files are kept)");
   command->add_flag("--debug-views", options.debug_views,
                     "Also write albedo, normals, positions, depth, shadow mask, SSR reflection and failure mask per frame");
   command->add_flag("--video", options.video, "Also encode DIR/walkthrough.mp4 with ffmpeg (must be on PATH)");
@@ -295,7 +302,7 @@ int run_render_command(const RenderOptions& options) {
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
-  const OutputFolder out(options.out);
+  const OutputFolder out(options.out, options.overwrite ? EarlierRun::replace : EarlierRun::refuse);
   HeadlessGlContext context;  // logs its renderer with --verbose
   FrameLoop loop(scene, settings, {options.width, options.height, options.deform == "on", deforms_on_gpu(options)},
                  pass_timing_for_renderer(context.renderer()));
@@ -310,7 +317,11 @@ int run_render_command(const RenderOptions& options) {
 
   ProgressBar progress("render", frames.size());
   const auto run_start = Clock::now();
+  // Ctrl-C or SIGTERM: the frame under way is finished and written, then timings.csv and run.json are
+  // committed with the frames done so far.
+  const InterruptionScope interruptible;
   for (const int frame : frames) {
+    if (interruption_requested()) break;
     const FrameMeasurement measured = loop.run(frame);
     if (!options.timings_only) {
       const ImageRgba8 image = pipeline.read_final();
@@ -327,7 +338,13 @@ int run_render_command(const RenderOptions& options) {
   timings.commit();
   std::optional<rt::RayTracerStats> tracer_stats;
   if (pipeline.ray_tracer() != nullptr) tracer_stats = pipeline.ray_tracer()->stats();
+  if (interruption_requested()) record.mark_interrupted(interruption_signal_name());
   record.write(out.path() / "run.json", milliseconds_since(run_start), tracer_stats);
+  if (interruption_requested()) {
+    log_warning("render: interrupted by {} after {} of {} frames; {} holds them, their timings and run.json",
+              interruption_signal_name(), timings.row_count(), frames.size(), out.path().string());
+    return interrupted_exit_code();
+  }
   log_info("wrote {} frames to {}", frames.size(), out.path().string());
   return 0;
 }

@@ -29,6 +29,7 @@ struct RenderOptions {
   std::string target;             // "x,y,z": what the fixed camera looks at (with camera)
   bool flat_normals = false;      // LoadOptions::flat_normals
   std::string out = "render-out";
+  bool overwrite = false;         // replace an earlier run in `out` instead of refusing it
   bool debug_views = false;
   bool video = false;
   bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)

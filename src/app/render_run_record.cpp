@@ -5,12 +5,28 @@
 #include "core/utc_timestamp.h"
 #include "render/frame_pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 
 namespace glint {
 namespace {
 
+
+constexpr double kBytesPerMegabyte = 1024.0 * 1024.0;
+
+CsvField megabytes_field(std::optional<std::uint64_t> bytes) {
+  return bytes ? CsvField(static_cast<double>(*bytes) / kBytesPerMegabyte) : CsvField("");
+}
+
+// {"after_first_frame", "after_last_frame", "peak"} in MiB, or null when the memory was not sampled.
+nlohmann::json memory_summary(std::optional<std::uint64_t> first, std::optional<std::uint64_t> last,
+                              std::optional<std::uint64_t> peak) {
+  if (!first) return nullptr;
+  return {{"after_first_frame", static_cast<double>(*first) / kBytesPerMegabyte},
+          {"after_last_frame", static_cast<double>(*last) / kBytesPerMegabyte},
+          {"peak", static_cast<double>(*peak) / kBytesPerMegabyte}};
+}
 
 nlohmann::json scene_summary(const Scene& scene) {
   return {{"name", untrusted_text(scene.name)},  // from the scene file: bounded, escaped
@@ -71,14 +87,15 @@ std::vector<std::string> RenderRunRecord::timings_header() {
   std::vector<std::string> header{"frame"};
   for (const std::string_view pass : render::kFramePassNames) header.push_back(std::string(pass) + "_ms");
   for (const char* column : {"gpu_total_ms", "cpu_frame_ms", "deform_ms", "accel_update_ms", "trace_ms", "triangles",
-                             "reflective_pixels", "ssr_failed_pixels", "rays_traced"})
+                             "reflective_pixels", "ssr_failed_pixels", "rays_traced", "resident_mb",
+                             "gpu_memory_used_mb"})
     header.emplace_back(column);
   return header;
 }
 
 std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   std::vector<CsvField> row{frame.frame};
-  std::map<std::string, double>& recorded = frame_ms_.emplace_back();
+  std::map<std::string, double> recorded;
   double gpu_total_ms = 0.0;
   for (const std::string_view pass : render::kFramePassNames) {
     std::optional<double> ms;
@@ -103,6 +120,10 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   row.emplace_back(ssr ? CsvField(ssr->reflective) : rays ? CsvField(rays->reflective_pixels) : CsvField(""));
   row.emplace_back(ssr ? CsvField(ssr->failed) : CsvField(""));
   row.emplace_back(rays ? CsvField(rays->rays_traced) : CsvField(""));
+  row.emplace_back(megabytes_field(frame.resident_bytes));
+  row.emplace_back(megabytes_field(frame.gpu_memory_used_bytes));
+  resident_.add(frame.resident_bytes);
+  gpu_memory_.add(frame.gpu_memory_used_bytes);
   recorded["gpu_total_ms"] = gpu_total_ms;
   recorded["cpu_frame_ms"] = frame.cpu_frame_ms;
   recorded["deform_ms"] = frame.deform_ms;
@@ -111,8 +132,21 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
     recorded["trace_ms"] = rays->trace_ms;
     recorded["rays_traced"] = rays->rays_traced;
   }
+  if (frames_recorded_++ == 0)
+    first_frame_ = std::move(recorded);
+  else
+    for (const auto& [column, value] : recorded) later_sums_[column] += value;
   return row;
 }
+
+void RenderRunRecord::MemorySamples::add(std::optional<std::uint64_t> bytes) {
+  if (!bytes) return;
+  if (!first) first = bytes;
+  last = bytes;
+  peak = std::max(peak.value_or(0), *bytes);
+}
+
+void RenderRunRecord::mark_interrupted(const char* signal) { run_["interrupted_by"] = signal; }
 
 void RenderRunRecord::set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats) {
   run_["ray_tracer"] = {{"backend", settings.backend},
@@ -132,16 +166,16 @@ void RenderRunRecord::write(const std::filesystem::path& path, double wall_ms,
     run["ray_tracer"]["refits"] = final_tracer_stats->refits;
     if (final_tracer_stats->blas_sah_drift) run["ray_tracer"]["final_blas_sah_drift"] = *final_tracer_stats->blas_sah_drift;
   }
-  const std::size_t skipped = frame_ms_.size() > 1 ? 1 : 0;
-  std::map<std::string, double> sums;
-  for (std::size_t i = skipped; i < frame_ms_.size(); ++i)
-    for (const auto& [column, ms] : frame_ms_[i]) sums[column] += ms;
+  const std::size_t skipped = frames_recorded_ > 1 ? 1 : 0;
+  const std::map<std::string, double>& sums = skipped ? later_sums_ : first_frame_;
   nlohmann::json means = nlohmann::json::object();
-  const double counted = static_cast<double>(frame_ms_.size() - skipped);
+  const double counted = static_cast<double>(frames_recorded_ - skipped);
   for (const auto& [column, sum] : sums) means[column] = sum / counted;
   run["mean_per_frame"] = means;
   run["mean_excludes_first_frames"] = skipped;
-  run["frames_rendered"] = frame_ms_.size();
+  run["frames_rendered"] = frames_recorded_;
+  run["memory_mb"] = {{"resident", memory_summary(resident_.first, resident_.last, resident_.peak)},
+                      {"gpu_used", memory_summary(gpu_memory_.first, gpu_memory_.last, gpu_memory_.peak)}};
   run["wall_seconds"] = wall_ms / 1000.0;
   write_file_atomically(path, run.dump(2) + "\n");
 }

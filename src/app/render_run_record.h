@@ -32,7 +32,7 @@ public:
 
   // Column names of timings.csv: frame, <pass>_ms for every pass of render::kFramePassNames,
   // gpu_total_ms, cpu_frame_ms, deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,
-  // ssr_failed_pixels, rays_traced.
+  // ssr_failed_pixels, rays_traced, resident_mb, gpu_memory_used_mb.
   static std::vector<std::string> timings_header();
 
   // The timings.csv row of one frame (and remembers it for the means in run.json). A pass that did
@@ -41,6 +41,9 @@ public:
 
   // The ray tracer's backend, structure, policy and build statistics, for run.json.
   void set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats);
+
+  // Records in run.json that the run was stopped by `signal` ("SIGINT") before all its frames.
+  void mark_interrupted(const char* signal);
 
   // Writes run.json (atomically) with the means over the frames recorded so far, leaving out the
   // first frame when there are more (it pays for shader compilation and first-touch uploads), and
@@ -51,8 +54,18 @@ public:
 private:
   nlohmann::json run_;
   std::size_t triangles_ = 0;
-  // Per recorded frame: milliseconds by column name (passes, gpu_total, cpu_frame, deform).
-  std::vector<std::map<std::string, double>> frame_ms_;
+  // Running sums, so a run of any length holds the same few numbers (docs/reliability.md's soak runs):
+  // the first frame's values by column name (passes, gpu_total, cpu_frame, deform, ...) and the sums
+  // over the later frames, which the means use.
+  std::map<std::string, double> first_frame_;
+  std::map<std::string, double> later_sums_;
+  std::size_t frames_recorded_ = 0;
+  // Resident and GPU memory after the first and the last frame, and their peaks (bytes).
+  struct MemorySamples {
+    std::optional<std::uint64_t> first, last, peak;
+    void add(std::optional<std::uint64_t> bytes);
+  };
+  MemorySamples resident_, gpu_memory_;
 };
 
 }  // namespace glint

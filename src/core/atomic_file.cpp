@@ -3,8 +3,10 @@
 #include "core/error.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
@@ -100,6 +102,40 @@ std::filesystem::path temporary_sibling_path(const std::filesystem::path& path) 
   name += '-';
   name += std::to_string(counter++);
   return path.parent_path() / name;
+}
+
+namespace {
+
+// The process id in a temporary's name ".<name>.tmp-<pid>-<n>", or 0 when `name` is not one.
+pid_t temporary_owner(const std::string& name) {
+  const std::size_t tmp = name.rfind(".tmp-");
+  if (name.empty() || name.front() != '.' || tmp == std::string::npos || tmp == 0) return 0;
+  const std::size_t dash = name.find('-', tmp + 5);
+  if (dash == std::string::npos || dash == tmp + 5 || dash + 1 == name.size()) return 0;
+  const std::string pid_text = name.substr(tmp + 5, dash - tmp - 5);
+  const std::string counter_text = name.substr(dash + 1);
+  const auto all_digits = [](const std::string& text) {
+    return std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  if (!all_digits(pid_text) || !all_digits(counter_text) || pid_text.size() > 9) return 0;
+  return static_cast<pid_t>(std::stol(pid_text));
+}
+
+bool process_is_running(pid_t pid) { return ::kill(pid, 0) == 0 || errno == EPERM; }
+
+}  // namespace
+
+std::size_t remove_stale_temporaries(const std::filesystem::path& folder) {
+  std::size_t removed = 0;
+  std::error_code error;
+  for (std::filesystem::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (!it->is_regular_file(error)) continue;
+    const pid_t owner = temporary_owner(it->path().filename().string());
+    if (owner <= 0 || owner == ::getpid() || process_is_running(owner)) continue;
+    std::error_code ignored;
+    removed += std::filesystem::remove(it->path(), ignored) ? 1 : 0;
+  }
+  return removed;
 }
 
 void rename_onto(const std::filesystem::path& temporary, const std::filesystem::path& path) {

@@ -19,6 +19,11 @@ namespace glint {
 // folder as `path`, so renaming it onto `path` is atomic.
 std::filesystem::path temporary_sibling_path(const std::filesystem::path& path);
 
+// Removes the temporaries (see temporary_sibling_path) under `folder` and its subfolders that a process
+// no longer running left behind: a run killed without a chance to clean up (SIGKILL, a power cut).
+// Temporaries of running processes, this one included, are kept. Returns how many were removed.
+std::size_t remove_stale_temporaries(const std::filesystem::path& folder);
+
 // Renames a finished temporary onto `path` (replacing an existing file). On failure the temporary is
 // removed and a glint::Error names `path` and the reason.
 void rename_onto(const std::filesystem::path& temporary, const std::filesystem::path& path);

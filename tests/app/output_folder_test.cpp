@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -44,6 +45,49 @@ TEST(OutputFolder, ParentThatIsAFileIsAnErrorNamingThePath) {
   const fs::path path = file / "out";
   const std::string message = error_of([&] { OutputFolder folder(path); });
   EXPECT_EQ(message.rfind("cannot create output folder '" + path.string() + "'", 0), 0u) << message;
+}
+
+TEST(OutputFolder, AFolderItCreatedIsRemovedWhenNothingWasWritten) {
+  TempFolder temp;
+  const fs::path unused = temp.path() / "unused";
+  { const OutputFolder folder(unused); }
+  EXPECT_FALSE(fs::exists(unused)) << "a run that failed before writing leaves no empty folder";
+  const fs::path used = temp.path() / "used";
+  {
+    const OutputFolder folder(used);
+    temp.write("used/run.json", "{}");
+  }
+  EXPECT_TRUE(fs::exists(used / "run.json"));
+  fs::create_directories(temp.path() / "existing");
+  { const OutputFolder folder(temp.path() / "existing"); }
+  EXPECT_TRUE(fs::is_directory(temp.path() / "existing")) << "a folder it did not create stays";
+}
+
+TEST(OutputFolder, EarlierRunIsRefusedReplacedOrKept) {
+  TempFolder temp;
+  temp.write("out/frame_00001.png", "old");
+  temp.write("out/frame_00001_albedo.png", "old");
+  temp.write("out/timings.csv", "old");
+  temp.write("out/.timings.csv.tmp-1-0", "old");
+  temp.write("out/mine.txt", "keep");
+  const std::string refused = error_of([&] { OutputFolder folder(temp.path() / "out", EarlierRun::refuse); });
+  EXPECT_NE(refused.find("holds an earlier run"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("--overwrite"), std::string::npos) << refused;
+  EXPECT_TRUE(fs::exists(temp.path() / "out/frame_00001.png"));
+  { const OutputFolder kept(temp.path() / "out", EarlierRun::keep); }
+  EXPECT_TRUE(fs::exists(temp.path() / "out/frame_00001.png"));
+  { const OutputFolder replaced(temp.path() / "out", EarlierRun::replace); }
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(temp.path() / "out")) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"mine.txt"});
+}
+
+TEST(OutputFolder, RunOutputNames) {
+  for (const char* name : {"run.json", "timings.csv", "walkthrough.mp4", "frame_00042.png", "frame_00042_normals.png",
+                           ".run.json.tmp-123-4"})
+    EXPECT_TRUE(is_run_output_name(name)) << name;
+  for (const char* name : {"notes.txt", "frame.txt", "summary.json", ".hidden", "cells"})
+    EXPECT_FALSE(is_run_output_name(name)) << name;
 }
 
 TEST(OutputFolder, FramePathsHaveFiveDigitsOrMore) {

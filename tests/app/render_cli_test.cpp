@@ -48,14 +48,19 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
   const std::vector<std::string> header = {
       "frame",        "shadow_ms",       "gbuffer_ms", "light_ms",  "ssr_ms",            "ray_list_ms",
       "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "cpu_frame_ms", "deform_ms",   "accel_update_ms",
-      "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced"};
+      "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced",
+      "resident_mb",  "gpu_memory_used_mb"};
   EXPECT_EQ(csv[0], header);
   EXPECT_EQ(csv[1][0], "2100");
   EXPECT_EQ(csv[2][0], "2101");
   for (std::size_t row = 1; row < csv.size(); ++row) {
     ASSERT_EQ(csv[row].size(), header.size());
-    for (std::size_t column = 1; column < header.size(); ++column)
+    for (std::size_t column = 1; column < header.size() - 1; ++column)
       EXPECT_GE(std::stod(csv[row][column]), 0.0) << header[column];
+    EXPECT_GT(std::stod(csv[row][17]), 10.0) << "a GL process holds more than 10 MiB";
+    if (!csv[row][18].empty()) {
+      EXPECT_GT(std::stod(csv[row][18]), 0.0) << "GPU memory in use (NVIDIA only)";
+    }
     EXPECT_LE(std::stoul(csv[row][15]), std::stoul(csv[row][14])) << "failed pixels are reflective pixels";
     EXPECT_EQ(csv[row][16], csv[row][15]) << "hybrid traces exactly the failed pixels";
   }
@@ -90,7 +95,7 @@ TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoIm
   EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 17u);
+  ASSERT_EQ(csv[1].size(), 19u);
   for (const int column : {4, 5, 6, 11, 12, 14, 15, 16})
     EXPECT_EQ(csv[1][column], "") << "column " << column << " (no SSR, no ray tracing)";
 }
@@ -103,7 +108,7 @@ TEST_F(RenderCli, RtModeWithEmbreeTracesEveryReflectivePixel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 17u);
+  ASSERT_EQ(csv[1].size(), 19u);
   EXPECT_EQ(csv[1][4], "") << "no SSR in rt mode";
   EXPECT_EQ(csv[1][15], "") << "no SSR failures in rt mode";
   EXPECT_GT(std::stoul(csv[1][16]), 0u);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -50,6 +51,23 @@ TEST(AtomicFile, TemporaryIsAHiddenUniqueSiblingNamedAfterTheFile) {
   EXPECT_EQ(first.filename().string().rfind(prefix, 0), 0u) << first;
   EXPECT_NE(first, second);
   EXPECT_EQ(temporary_sibling_path("relative.csv").parent_path(), fs::path());
+}
+
+TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
+  const TempFolder temp;
+  // A process id that is not running: a child that has exited and been reaped.
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ::waitpid(child, nullptr, 0);
+  const std::string dead = std::to_string(child), alive = std::to_string(::getpid());
+  const fs::path stale = temp.write("cells/.a.csv.tmp-" + dead + "-0", "x");
+  const fs::path ours = temp.write("cells/.b.csv.tmp-" + alive + "-3", "x");
+  const fs::path parent = temp.write(".c.csv.tmp-" + std::to_string(::getppid()) + "-1", "x");
+  const fs::path not_temporary = temp.write("cells/.notes.tmp-x-1", "x");
+  const fs::path plain = temp.write("cells/a.csv", "x");
+  EXPECT_EQ(remove_stale_temporaries(temp.path()), 1u);
+  EXPECT_FALSE(fs::exists(stale));
+  for (const fs::path& kept : {ours, parent, not_temporary, plain}) EXPECT_TRUE(fs::exists(kept)) << kept;
 }
 
 TEST(AtomicFile, CommittedContentIsExactAndNoTemporaryRemains) {

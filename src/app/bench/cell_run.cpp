@@ -8,6 +8,7 @@
 #include "core/csv_writer.h"
 #include "core/error.h"
 #include "core/image.h"
+#include "core/interruption.h"
 #include "metrics/image_comparison.h"
 #include "rt/instance_subset_tracer.h"
 
@@ -95,6 +96,7 @@ void run_frame_times(const Cell& cell, Scene& scene, const std::vector<int>& fra
     progress.tick();
   }
   for (const int frame : frames) {
+    throw_if_interrupted("bench");
     csv.add_row(record.add_frame(loop.run(frame)));
     progress.tick();
   }
@@ -118,6 +120,7 @@ void run_quality(const Cell& cell, Scene& scene, const std::vector<int>& frames,
     const RenderOptions options = render_options(cell, mode, settings);
     FrameLoop loop = make_loop(cell, scene, options, context);
     for (const int frame : frames) {
+      throw_if_interrupted("bench");
       (void)loop.run(frame);
       ImageRgba8 image = loop.pipeline().read_final();
       write_png(images.path() / fmt::format("frame_{:05d}_{}.png", frame, mode), image);
