@@ -10,7 +10,6 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "rt/tiny_scene.h"
-#include "scene/default_walkthrough.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -216,8 +215,9 @@ INSTANTIATE_TEST_SUITE_P(AccelBench, AccelBenchFarFromOrigin,
 
 // A lone square plane seen by a camera inside it, so that every primary ray that goes down hits it
 // at t = 0 give or take float rounding (t 0 in one structure, 1.4e-7 in another, or just below 0,
-// i.e. a miss). Axis-aligned (a plane-only OBJ, whose default walkthrough puts the camera at a
-// third of the plane's zero height), and tilted and moved away, the camera on it by float rounding.
+// i.e. a miss): the plane-only OBJ, whose default walkthrough then put the camera at a
+// third of the plane's zero height. Axis-aligned, or tilted and moved away, the camera then on the
+// plane only to float rounding.
 Scene plane_scene(float half, const mat4& placement) {
   Scene scene;
   scene.name = "plane";
@@ -229,13 +229,11 @@ Scene plane_scene(float half, const mat4& placement) {
   mesh.indices = {0, 1, 2, 0, 2, 3};
   scene.meshes.push_back(mesh);
   scene.instances.push_back({"plane", 0, placement});
+  const auto on_plane = [&](float x, float z) { return vec3(placement * vec4(x * half, 0.0f, z * half, 1.0f)); };
+  scene.walkthrough.camera.points = {on_plane(-0.6f, 0.5f), on_plane(0.1f, 0.3f), on_plane(0.5f, 0.45f)};
+  scene.walkthrough.camera.targets = {on_plane(0.2f, -0.7f)};
+  scene.walkthrough.light.points = {on_plane(0.0f, 0.0f) + vec3(0.0f, half, 0.0f)};
   scene.walkthrough.frame_count = 100;
-  assign_default_walkthrough(scene);
-  if (placement != mat4(1.0f)) {
-    const auto on_plane = [&](float x, float z) { return vec3(placement * vec4(x * half, 0.0f, z * half, 1.0f)); };
-    scene.walkthrough.camera.points = {on_plane(-0.6f, 0.5f), on_plane(0.1f, 0.3f), on_plane(0.5f, 0.45f)};
-    scene.walkthrough.camera.targets = {on_plane(0.2f, -0.7f)};
-  }
   scene.validate();
   return scene;
 }
