@@ -13,7 +13,7 @@ namespace {
 constexpr GLbitfield kPersistent = GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
 
 // A buffer with immutable storage mapped for the whole of its life (unmapped when deleted).
-// GL_CLIENT_STORAGE_BIT asks for host memory: only the CPU reads it.
+// GL_CLIENT_STORAGE_BIT asks for host memory: the CPU touches every byte each frame.
 GlBuffer create_mapped_buffer(std::size_t bytes, GLbitfield access, void** mapped, const char* what) {
   GlBuffer buffer = create_buffer(bytes, nullptr, access | kPersistent | GL_CLIENT_STORAGE_BIT);
   *mapped = glMapNamedBufferRange(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), access | kPersistent);
@@ -25,15 +25,16 @@ GlBuffer create_mapped_buffer(std::size_t bytes, GLbitfield access, void** mappe
 
 RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory) : capacity_(capacity), memory_(memory) {
   if (capacity == 0) fail("ray buffers: capacity must be at least one ray");
-  const bool host = memory == RayHitMemory::host;
-  rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
-  // Host memory: the tracer's hits are uploaded each frame.
-  hits_ = create_buffer(capacity * sizeof(accel::Hit), nullptr, host ? GL_DYNAMIC_STORAGE_BIT : 0);
-  if (host) {
-    host_rays_.resize(capacity);
-    host_hits_.resize(capacity);
-  }
   void* mapped = nullptr;
+  if (memory == RayHitMemory::host_mapped) {
+    rays_ = create_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped, "ray");
+    mapped_rays_ = static_cast<accel::Ray*>(mapped);
+    hits_ = create_mapped_buffer(capacity * sizeof(accel::Hit), GL_MAP_WRITE_BIT, &mapped, "hit");
+    mapped_hits_ = static_cast<accel::Hit*>(mapped);
+  } else {
+    rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
+    hits_ = create_buffer(capacity * sizeof(accel::Hit), nullptr, 0);
+  }
   counters_readback_ = create_mapped_buffer(2 * sizeof(std::uint32_t), GL_MAP_READ_BIT, &mapped, "counter");
   mapped_counters_ = static_cast<const std::uint32_t*>(mapped);
   pixels_ = create_buffer(capacity * sizeof(std::uint32_t), nullptr, 0);
@@ -63,8 +64,7 @@ RayListCounts RayHitBuffers::finish_ray_list() {
 }
 
 void RayHitBuffers::request_counts() {
-  // The counters' readback buffer is persistently mapped: shader writes reach it, and so the CPU,
-  // only after this barrier and a fence.
+  // Shader writes to a persistently mapped buffer reach the CPU only after this barrier and a fence.
   glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glCopyNamedBufferSubData(counters_.id(), counters_readback_.id(), 0, 0, 2 * sizeof(std::uint32_t));
   if (counts_fence_ != nullptr) glDeleteSync(counts_fence_);
@@ -90,29 +90,16 @@ RayListCounts RayHitBuffers::read_requested_counts() {
   return counts;
 }
 
-void RayHitBuffers::require_host(std::size_t count, const char* what) const {
-  if (memory_ != RayHitMemory::host) fail("ray buffers: {} in device memory do not go through the host", what);
-  if (count > capacity_) fail("ray buffers: {} {} asked of a list of capacity {}", count, what, capacity_);
+std::span<const accel::Ray> RayHitBuffers::rays(std::size_t count) const {
+  if (memory_ != RayHitMemory::host_mapped) fail("ray buffers: rays in device memory cannot be read by the CPU");
+  if (count > capacity_) fail("ray buffers: {} rays asked of a list of capacity {}", count, capacity_);
+  return {mapped_rays_, count};
 }
 
-std::span<const accel::Ray> RayHitBuffers::read_rays(std::size_t count) {
-  require_host(count, "rays");
-  if (count > 0)
-    glGetNamedBufferSubData(rays_.id(), 0, static_cast<GLsizeiptr>(count * sizeof(accel::Ray)), host_rays_.data());
-  check_gl("ray buffers: read rays");
-  return {host_rays_.data(), count};
-}
-
-std::span<accel::Hit> RayHitBuffers::host_hits(std::size_t count) {
-  require_host(count, "hits");
-  return {host_hits_.data(), count};
-}
-
-void RayHitBuffers::write_hits(std::span<const accel::Hit> hits) {
-  require_host(hits.size(), "hits");
-  if (!hits.empty())
-    glNamedBufferSubData(hits_.id(), 0, static_cast<GLsizeiptr>(hits.size_bytes()), hits.data());
-  check_gl("ray buffers: write hits");
+std::span<accel::Hit> RayHitBuffers::hits(std::size_t count) {
+  if (memory_ != RayHitMemory::host_mapped) fail("ray buffers: hits in device memory cannot be written by the CPU");
+  if (count > capacity_) fail("ray buffers: {} hits asked of a list of capacity {}", count, capacity_);
+  return {mapped_hits_, count};
 }
 
 }  // namespace glint::render

@@ -26,7 +26,7 @@ std::unique_ptr<rt::RayTracer> built_tracer(const Scene& scene, const RayTracing
 }
 
 RayHitMemory buffer_memory(rt::RayTracer& tracer) {
-  return tracer.device_tracing() ? RayHitMemory::device : RayHitMemory::host;
+  return tracer.device_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
 }
 
 std::size_t pixel_count(int width, int height) {
@@ -88,9 +88,7 @@ void RayTracedReflections::trace(RayListCounts host_counts) {
   if (!device_) {
     last_stats_ = {host_counts.rays, host_counts.reflective, 0.0};
     const auto trace_start = Clock::now();
-    const std::span<accel::Hit> hits = buffers_.host_hits(host_counts.rays);
-    tracer_->trace_closest(buffers_.read_rays(host_counts.rays), hits);
-    buffers_.write_hits(hits);
+    tracer_->trace_closest(buffers_.rays(host_counts.rays), buffers_.hits(host_counts.rays));
     last_stats_.trace_ms = milliseconds_since(trace_start);
     stats_pending_ = false;
     return;
