@@ -192,12 +192,14 @@ void expect_every_check_passed(const BenchReport& report) {
   for (const StructureResult& r : report.structures) {
     EXPECT_TRUE(r.mrays_per_s.has_value()) << r.name << " " << r.skipped;
     EXPECT_EQ(r.disagreements, 0u) << r.hit_problem;
-    EXPECT_EQ(r.edge_grazes, 0u) << r.name;
   }
   for (const DeformResult& d : report.deform) EXPECT_EQ(d.disagreements.value_or(0), 0u) << d.hit_problem;
   EXPECT_TRUE(hit_problems(report).empty());
 }
 
+// The tiny scene scaled by 1000 and moved to (20000, 5000, -30000): coordinates up to 38,000, where a
+// float's ulp is 0.004. With the old rule (1e-4 of t) Embree disagreed on 2 of the 4,608 random rays
+// (which start anywhere in the box, so t can be short): the same triangle at t 3.78364 and 3.78287.
 class AccelBenchFarFromOrigin : public ::testing::TestWithParam<RayKind> {};
 
 TEST_P(AccelBenchFarFromOrigin, EveryCpuStructureAgreesWithTheReference) {

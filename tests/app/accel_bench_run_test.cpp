@@ -17,6 +17,8 @@
 
 #include <cmath>
 
+#include <unistd.h>
+
 namespace glint::accel_bench {
 namespace {
 
@@ -248,6 +250,14 @@ TEST(AccelBenchRun, JsonPathIsCheckedWithoutLeavingAFile) {
   const auto file = folder.write("file", "x");
   EXPECT_NE(glint::testing::error_of([&] { check_json_path(file / "out.json"); }).find("is not a folder"),
             std::string::npos);
+  if (::geteuid() != 0) {  // root writes everywhere
+    const auto read_only = folder.path() / "read-only";
+    std::filesystem::create_directory(read_only);
+    std::filesystem::permissions(read_only, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    EXPECT_NE(glint::testing::error_of([&] { check_json_path(read_only / "out.json"); }).find("Permission denied"),
+              std::string::npos);
+    std::filesystem::permissions(read_only, std::filesystem::perms::owner_all);
+  }
 }
 
 }  // namespace
