@@ -3,7 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/untrusted_text.h"
-#include "scene/jpeg_huffman_check.h"
+#include "scene/stb_image_guard.h"
 
 #include <stb/stb_image.h>
 
@@ -63,7 +63,7 @@ Texture decode_texture(std::span<const unsigned char> encoded, const std::string
     fail("{} bytes is more than any texture within glint's limit", encoded.size());
   const std::string_view format = format_name(encoded);
   const int size = static_cast<int>(encoded.size());
-  check_jpeg_huffman_tables(encoded);  // before stb_image reads any JPEG segment (jpeg_huffman_check.h)
+  check_before_stb_image(encoded);  // inputs that stb_image 2.27 mishandles (stb_image_guard.h)
   int width = 0, height = 0, channels_in_file = 0;
   if (stbi_info_from_memory(encoded.data(), size, &width, &height, &channels_in_file) == 0) {
     // stb_image's own reason is left out: it is the last format it tried that set it, so a damaged
