@@ -39,6 +39,24 @@ std::vector<int> library_index_of_tinyobj_ids(const std::vector<tinyobj::materia
   return result;
 }
 
+// tinyobjloader and obj_validation can disagree on what a vertex line is (tinyobjloader separates
+// tokens by spaces and tabs only: "v\v0 1 0" is a vertex to the validation pass but not to it), and
+// then a face index the validation accepted runs past tinyobjloader's arrays (a heap over-read found
+// by fuzz/, input in fuzz/regressions/obj_mtl/). Every index is checked against what was read.
+void check_face_indices(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                        const std::string& file_label) {
+  const auto fits = [](int index, std::size_t values, std::size_t per_element) {
+    return index < 0 || static_cast<std::size_t>(index) < values / per_element;  // -1: not given
+  };
+  for (const tinyobj::shape_t& shape : shapes)
+    for (const tinyobj::index_t& index : shape.mesh.indices)
+      if (!fits(index.vertex_index, attrib.vertices.size(), 3) || !fits(index.normal_index, attrib.normals.size(), 3) ||
+          !fits(index.texcoord_index, attrib.texcoords.size(), 2))
+        fail("{}: a face refers to an element that tinyobjloader did not read ({} v, {} vt, {} vn read; separate the "
+             "numbers of v, vt and vn lines with spaces or tabs)",
+             file_label, attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3);
+}
+
 // Drops zero-area triangles (one warning for the file) and the meshes left without any.
 void remove_degenerate_geometry(std::vector<ObjMeshPart>& parts, const std::string& file_label) {
   std::size_t dropped = 0;
@@ -70,6 +88,7 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
          reader.Error().empty() ? "tinyobjloader could not parse the file" : untrusted_text(reader.Error()));
   if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, untrusted_text(reader.Warning()));
 
+  check_face_indices(reader.GetAttrib(), reader.GetShapes(), file_label);
   std::vector<ObjMeshPart> parts =
       assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), library_index_of_tinyobj_ids(reader.GetMaterials(), library),
                           library.names(), path.stem().string());
