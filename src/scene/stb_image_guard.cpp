@@ -2,7 +2,9 @@
 
 #include "core/error.h"
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <climits>
 #include <cstddef>
 #include <cstdint>
@@ -170,11 +172,28 @@ void check_pnm_header(std::span<const unsigned char> pnm) {
   }
 }
 
+// A PNG's chunks up to its first image data chunk (IDAT): an empty one there makes stb_image copy
+// zero bytes to a null buffer (undefined behaviour; later IDATs append to a buffer that exists).
+void check_png_first_image_data(std::span<const unsigned char> png) {
+  static constexpr unsigned char kSignature[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (png.size() < sizeof kSignature || !std::equal(std::begin(kSignature), std::end(kSignature), png.begin())) return;
+  for (std::size_t at = sizeof kSignature; at + 8 <= png.size();) {
+    const std::uint32_t length = std::uint32_t{png[at]} << 24 | std::uint32_t{png[at + 1]} << 16 |
+                                 std::uint32_t{png[at + 2]} << 8 | std::uint32_t{png[at + 3]};
+    if (png[at + 4] == 'I' && png[at + 5] == 'D' && png[at + 6] == 'A' && png[at + 7] == 'T') {
+      if (length == 0) fail("the PNG's first image data chunk (IDAT, byte {}) is empty", at);
+      return;
+    }
+    at += 12 + static_cast<std::size_t>(length);  // length, type, data, CRC
+  }
+}
+
 }  // namespace
 
 void check_before_stb_image(std::span<const unsigned char> encoded) {
   check_jpeg(encoded);
   check_pnm_header(encoded);
+  check_png_first_image_data(encoded);
 }
 
 }  // namespace glint

@@ -8,7 +8,9 @@
 //  - a JPEG scan that decodes with a Huffman table no DHT segment defined: stb_image reads the table
 //    from uninitialised memory and indexes its arrays with what it finds (reads far out of bounds);
 //  - a binary PNM (P5/P6) whose header numbers do not fit in an int: stb_image's parser overflows a
-//    signed int (undefined behaviour).
+//    signed int (undefined behaviour);
+//  - a PNG whose first image data chunk (IDAT) is empty: stb_image copies zero bytes to a null
+//    pointer (undefined behaviour).
 #include <span>
 
 namespace glint {

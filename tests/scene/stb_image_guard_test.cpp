@@ -117,6 +117,22 @@ TEST(StbImageGuard, APnmHeaderNumberBeyondAnIntIsAnError) {
   EXPECT_THROW(check_before_stb_image(pnm("P6 2 2 2147483648")), Error);
 }
 
+TEST(StbImageGuard, APngWhoseFirstImageDataChunkIsEmptyIsAnError) {
+  const Bytes signature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  const auto chunk = [](std::string_view type, std::size_t length) {
+    Bytes bytes{0, 0, 0, static_cast<unsigned char>(length)};
+    bytes.insert(bytes.end(), type.begin(), type.end());
+    bytes.resize(bytes.size() + length + 4, 0);  // data and CRC (not checked here)
+    return bytes;
+  };
+  const std::string message =
+      testing::error_of([&] { check_before_stb_image(concat({signature, chunk("IHDR", 13), chunk("IDAT", 0), chunk("IDAT", 9)})); });
+  EXPECT_NE(message.find("first image data chunk (IDAT, byte 33) is empty"), std::string::npos) << message;
+  // An empty IDAT after data appends nothing to a buffer that exists.
+  EXPECT_NO_THROW(check_before_stb_image(concat({signature, chunk("IHDR", 13), chunk("IDAT", 9), chunk("IDAT", 0)})));
+  EXPECT_NO_THROW(check_before_stb_image(concat({signature, chunk("IHDR", 13)})));
+}
+
 TEST(StbImageGuard, DecodeTextureRefusesTheTableBeforeStbImageBuildsIt) {
   // Without the check, stb_image 2.27 writes the 272 code lengths past its 257-byte array.
   const Bytes jpeg = concat({kStart, huffman_segment(k272Codes), kEnd});
