@@ -1,5 +1,6 @@
 #include "app/info_command.h"
 
+#include "core/untrusted_text.h"
 #include "scene/camera_path.h"
 #include "scene/load_scene.h"
 
@@ -27,15 +28,15 @@ std::string count_text(std::size_t n) {
 
 nlohmann::json scene_json(const Scene& scene) {
   nlohmann::json j;
-  j["name"] = scene.name;
+  j["name"] = untrusted_text(scene.name);
   j["source"] = scene.source;
   j["vertices"] = scene.vertex_count();
   j["triangles"] = scene.triangle_count();
   const Aabb bounds = scene.world_bounds();
   j["bounds"] = {{"min", vec_json(bounds.min)}, {"max", vec_json(bounds.max)}};
   for (const Mesh& mesh : scene.meshes) {
-    nlohmann::json m = {{"name", mesh.name}, {"vertices", mesh.vertex_count()}, {"triangles", mesh.triangle_count()},
-                        {"material", scene.materials[mesh.material].name}, {"deformable", mesh.deformable}};
+    nlohmann::json m = {{"name", untrusted_text(mesh.name)}, {"vertices", mesh.vertex_count()}, {"triangles", mesh.triangle_count()},
+                        {"material", untrusted_text(scene.materials[mesh.material].name)}, {"deformable", mesh.deformable}};
     if (mesh.deform)
       m["deform"] = {{"type", "sine"}, {"axis", axis_name(mesh.deform->displace_axis)},
                      {"along", axis_name(mesh.deform->wave_axis)}, {"amplitude", mesh.deform->amplitude},
@@ -43,15 +44,15 @@ nlohmann::json scene_json(const Scene& scene) {
     j["meshes"].push_back(m);
   }
   for (const Instance& instance : scene.instances)
-    j["instances"].push_back({{"name", instance.name}, {"mesh", scene.meshes[instance.mesh].name}});
+    j["instances"].push_back({{"name", untrusted_text(instance.name)}, {"mesh", untrusted_text(scene.meshes[instance.mesh].name)}});
   for (const Material& material : scene.materials) {
-    nlohmann::json m = {{"name", material.name}, {"diffuse", vec_json(material.diffuse)},
+    nlohmann::json m = {{"name", untrusted_text(material.name)}, {"diffuse", vec_json(material.diffuse)},
                         {"reflectivity", material.reflectivity}, {"specular_exponent", material.specular_exponent}};
-    if (material.diffuse_texture >= 0) m["texture"] = scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name;
+    if (material.diffuse_texture >= 0) m["texture"] = untrusted_text(scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name);
     j["materials"].push_back(m);
   }
   for (const Texture& texture : scene.textures)
-    j["textures"].push_back({{"name", texture.name}, {"width", texture.width}, {"height", texture.height},
+    j["textures"].push_back({{"name", untrusted_text(texture.name)}, {"width", texture.width}, {"height", texture.height},
                              {"placeholder", texture.placeholder}});
   j["light"] = {{"position", vec_json(scene.light.position)}, {"color", vec_json(scene.light.color)},
                 {"intensity", scene.light.intensity}, {"range", scene.light.range}};
@@ -69,29 +70,29 @@ nlohmann::json scene_json(const Scene& scene) {
 
 void print_text(const Scene& scene) {
   const Aabb bounds = scene.world_bounds();
-  fmt::print("scene       {} ({})\n", scene.name, scene.source);
+  fmt::print("scene       {} ({})\n", untrusted_text(scene.name), untrusted_text(scene.source));
   fmt::print("vertices    {}\n", count_text(scene.vertex_count()));
   fmt::print("triangles   {}\n", count_text(scene.triangle_count()));
   fmt::print("bounds      min {} max {} size {}\n", vec_text(bounds.min), vec_text(bounds.max), vec_text(bounds.extent()));
   fmt::print("meshes      {} ({} instances)\n", scene.meshes.size(), scene.instances.size());
   for (const Mesh& mesh : scene.meshes)
-    fmt::print("  {:<32} {:>9} vertices {:>9} triangles  {}{}\n", mesh.name, count_text(mesh.vertex_count()),
-               count_text(mesh.triangle_count()), scene.materials[mesh.material].name, mesh.deformable ? "  [deformable]" : "");
+    fmt::print("  {:<32} {:>9} vertices {:>9} triangles  {}{}\n", untrusted_text(mesh.name), count_text(mesh.vertex_count()),
+               count_text(mesh.triangle_count()), untrusted_text(scene.materials[mesh.material].name), mesh.deformable ? "  [deformable]" : "");
   const auto deformable = scene.deformable_meshes();
   fmt::print("deformable  {}\n", deformable.empty() ? "none" : std::to_string(deformable.size()) + " meshes");
   for (std::uint32_t index : deformable) {
     const Mesh& mesh = scene.meshes[index];
-    fmt::print("  {:<32} sine: {} += {:.3f} * sin({:.2f} * {} + {:.2f} * t)\n", mesh.name, axis_name(mesh.deform->displace_axis),
+    fmt::print("  {:<32} sine: {} += {:.3f} * sin({:.2f} * {} + {:.2f} * t)\n", untrusted_text(mesh.name), axis_name(mesh.deform->displace_axis),
                mesh.deform->amplitude, mesh.deform->frequency, axis_name(mesh.deform->wave_axis), mesh.deform->speed);
   }
   fmt::print("materials   {}\n", scene.materials.size());
   for (const Material& material : scene.materials)
-    fmt::print("  {:<32} diffuse {}  reflectivity {:.2f}  shininess {:.0f}{}\n", material.name, vec_text(material.diffuse),
+    fmt::print("  {:<32} diffuse {}  reflectivity {:.2f}  shininess {:.0f}{}\n", untrusted_text(material.name), vec_text(material.diffuse),
                material.reflectivity, material.specular_exponent,
-               material.diffuse_texture >= 0 ? "  texture " + scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name : "");
+               material.diffuse_texture >= 0 ? "  texture " + untrusted_text(scene.textures[static_cast<std::size_t>(material.diffuse_texture)].name) : "");
   fmt::print("textures    {}\n", scene.textures.size());
   for (const Texture& texture : scene.textures)
-    fmt::print("  {:<48} {}x{}{}\n", texture.name, texture.width, texture.height, texture.placeholder ? "  (missing: checker)" : "");
+    fmt::print("  {:<48} {}x{}{}\n", untrusted_text(texture.name), texture.width, texture.height, texture.placeholder ? "  (missing: checker)" : "");
   fmt::print("light       at {}  colour {}  intensity {:.1f}  range {:.1f}\n", vec_text(scene.light.position),
              vec_text(scene.light.color), scene.light.intensity, scene.light.range);
   const WalkthroughAnimation animation(scene);

@@ -1,9 +1,13 @@
 // `glint info` end to end: the README's main job prints the paper's scene sizes, and --json is
 // machine-readable with the same numbers.
 #include "app/cli_runner.h"
+#include "support/temp_folder.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
 
 namespace glint::testing {
 namespace {
@@ -28,6 +32,21 @@ TEST(CliInfo, TextOutputShowsCountsBoundsLightAndPaths) {
                             "walkthrough 4900 frames", "path length"})
     EXPECT_NE(r.out.find(field), std::string::npos) << field << " missing from:\n" << r.out;
   EXPECT_TRUE(r.err.empty()) << r.err;
+}
+
+// Names come from files: a megabyte of name with escape sequences in it is printed bounded and escaped,
+// in text and in JSON, as every message does (core/untrusted_text.h).
+TEST(CliInfo, NamesFromTheFileAreBoundedAndEscaped) {
+  const TempFolder temp;
+  const std::string name = "\x1b[31m" + std::string(1'000'000, 'n');
+  const std::filesystem::path obj = temp.write("long.obj", "o " + name + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  for (const char* json : {"", " --json"}) {
+    const CliResult r = run_glint("info " + quoted(obj) + json);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_LT(r.out.size(), 20'000u) << json;
+    EXPECT_EQ(r.out.find('\x1b'), std::string::npos) << "the escape character is printed raw" << json;
+    EXPECT_NE(r.out.find("bytes in all"), std::string::npos) << json;
+  }
 }
 
 }  // namespace

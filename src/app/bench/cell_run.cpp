@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/interruption.h"
+#include "core/untrusted_text.h"
 #include "metrics/image_comparison.h"
 #include "rt/instance_subset_tracer.h"
 
@@ -71,7 +72,7 @@ nlohmann::json tracer_json(const rt::RayTracer* tracer) {
 }
 
 nlohmann::json scene_json(const Scene& scene) {
-  return {{"name", scene.name},
+  return {{"name", untrusted_text(scene.name)},
           {"vertices", scene.vertex_count()},
           {"triangles", scene.triangle_count()},
           {"deformable_meshes", scene.deformable_meshes().size()}};
