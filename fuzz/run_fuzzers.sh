@@ -55,4 +55,4 @@ for target in "${targets[@]}"; do
   corpus=$(find "$out/corpus/$target" -type f | wc -l)
   printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$target" "${time:-?}" "${executions:-?}" "${coverage:-?}" "$corpus" "$crashes" >>"$out/stats.tsv"
 done
-column -t "$out/stats.tsv"
+column -t "$out/stats.tsv" 2>/dev/null || cat "$out/stats.tsv"
