@@ -3,6 +3,7 @@
 #include "accel/refit.h"
 #include "accel/trace.h"
 #include "core/error.h"
+#include "core/math.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -10,16 +11,6 @@
 #include <cmath>
 
 namespace glint::accel {
-namespace {
-
-bool finite_matrix(const mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-
-}  // namespace
 
 Blas make_blas(const Bvh& bvh, const TriangleMesh& mesh) {
   // The same checks as a single-level batch (references of spatial-split BVHs included).
@@ -28,13 +19,13 @@ Blas make_blas(const Bvh& bvh, const TriangleMesh& mesh) {
 }
 
 Instance make_instance(uint32_t blas, const mat4& object_to_world) {
-  if (!finite_matrix(object_to_world)) fail("accel: instance transform is not finite");
+  if (!is_finite(object_to_world)) fail("accel: instance transform is not finite");
   if (glm::determinant(object_to_world) == 0.0f) fail("accel: instance transform is singular");
   Instance instance;
   instance.object_to_world = object_to_world;
   instance.world_to_object = glm::inverse(object_to_world);
   instance.blas = blas;
-  if (!finite_matrix(instance.world_to_object)) fail("accel: instance transform cannot be inverted in float");
+  if (!is_finite(instance.world_to_object)) fail("accel: instance transform cannot be inverted in float");
   return instance;
 }
 

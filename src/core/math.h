@@ -44,5 +44,11 @@ struct Aabb {
 Aabb transform_aabb(const mat4& transform, const Aabb& box);
 
 inline bool is_finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(const mat4& m) {
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      if (!std::isfinite(m[c][r])) return false;
+  return true;
+}
 
 }  // namespace glint

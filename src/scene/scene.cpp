@@ -44,13 +44,6 @@ std::vector<std::uint32_t> Scene::deformable_meshes() const {
 
 namespace {
 
-bool is_finite_matrix(const mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-
 // The first vertex of `mesh` (whose bounds are `box`) whose world position under `transform`
 // (computed as the ray tracers' scene_geometry does, in float) is not finite, or nullopt. A mesh whose
 // bounding box corners all map to finite points has none (each coordinate is affine in the position,
@@ -110,11 +103,11 @@ void Scene::validate() const {
     // What the acceleration structures need of each instance, checked here so that the error names the
     // scene file (the ray tracers' own checks can only say "accel: ..."), before any output is made.
     const mat4& m = instance.transform;
-    if (!is_finite_matrix(m)) fail("{}: instance '{}': the transform is not finite", source, shown_name());
+    if (!is_finite(m)) fail("{}: instance '{}': the transform is not finite", source, shown_name());
     // glm::inverse divides by the determinant: zero or infinite (a scale near 0 or above ~1e12 on every
     // axis) it gives a non-finite or all-zero inverse, and rays could not be taken into the instance.
     const float determinant = glm::determinant(m);
-    if (determinant == 0.0f || !std::isfinite(determinant) || !is_finite_matrix(glm::inverse(m)))
+    if (determinant == 0.0f || !std::isfinite(determinant) || !is_finite(glm::inverse(m)))
       fail("{}: instance '{}': the transform cannot be inverted in float (its determinant is {})", source, shown_name(),
            determinant);
     if (const std::optional<std::size_t> v = first_non_finite_world_vertex(meshes[instance.mesh], mesh_bounds[instance.mesh], m))

@@ -35,26 +35,35 @@ int count_frames(const fs::path& folder) {
   return frames;
 }
 
-// Starts `glint render ...` in a child process, waits until it wrote its first frame, sends `signal`
-// and returns the exit status.
-int render_and_signal(const fs::path& out, int signal) {
+// Starts `glint <arguments>` in a child process, waits until `ready()` (or three minutes), sends
+// `signal` and returns the exit status (or minus the signal that ended it).
+template <typename Ready>
+int run_and_signal(const std::vector<std::string>& arguments, Ready ready, int signal) {
   const pid_t child = ::fork();
   if (child == 0) {
     const std::string cli = cli_path();
-    const std::string out_text = out.string();
+    std::vector<char*> argv{const_cast<char*>(cli.c_str())};
+    for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+    argv.push_back(nullptr);
     // Quiet: stderr would mix into the test log.
-    std::freopen("/dev/null", "w", stderr);
-    ::execl(cli.c_str(), cli.c_str(), "render", "atrium-simple", "--reflections", "rt", "--backend", "embree", "--width",
-            "32", "--height", "18", "--frames", "0:400", "--out", out_text.c_str(), static_cast<char*>(nullptr));
+    if (std::freopen("/dev/null", "w", stderr) == nullptr) ::_exit(126);
+    ::execv(cli.c_str(), argv.data());
     ::_exit(127);
   }
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(3);
-  while ((!fs::exists(out) || count_frames(out) == 0) && std::chrono::steady_clock::now() < give_up)
+  while (!ready() && std::chrono::steady_clock::now() < give_up)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ::kill(child, signal);
   int status = 0;
   ::waitpid(child, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+// `glint render` of 401 small frames, signalled once its first frame is written.
+int render_and_signal(const fs::path& out, int signal) {
+  return run_and_signal({"render", "atrium-simple", "--reflections", "rt", "--backend", "embree", "--width", "32",
+                         "--height", "18", "--frames", "0:400", "--out", out.string()},
+                        [&] { return fs::exists(out) && count_frames(out) > 0; }, signal);
 }
 
 void expect_whole_partial_run(const fs::path& out, const char* signal_name) {
@@ -82,6 +91,35 @@ TEST(RenderInterruption, SigtermToo) {
   const fs::path out = temp.path() / "out";
   EXPECT_EQ(render_and_signal(out, SIGTERM), 128 + SIGTERM);
   expect_whole_partial_run(out, "SIGTERM");
+}
+
+// A quick paper bench stopped once its first cell is done: the finished cell stays, no temporary is
+// left anywhere, and the same command then resumes (keeps that cell) and completes.
+TEST(BenchInterruption, StopsTheCellUnderWayKeepsFinishedCellsAndResumes) {
+  const TempFolder temp;
+  const fs::path out = temp.path() / "bench";
+  const std::vector<std::string> arguments{"bench", "--experiment", "paper", "--quick", "--backends", "cpu",
+                                           "--no-plot", "--out", out.string()};
+  const auto cells_done = [&] {
+    std::error_code ignored;
+    if (!fs::is_directory(out / "cells", ignored)) return 0;
+    int done = 0;
+    for (const auto& entry : fs::directory_iterator(out / "cells", ignored))
+      done += entry.path().extension() == ".csv" && !entry.path().filename().string().starts_with(".");
+    return done;
+  };
+  EXPECT_EQ(run_and_signal(arguments, [&] { return cells_done() > 0; }, SIGINT), 128 + SIGINT);
+  const int kept = cells_done();
+  EXPECT_GE(kept, 1);
+  for (const auto& entry : fs::recursive_directory_iterator(out))
+    EXPECT_FALSE(entry.path().filename().string().starts_with(".")) << "temporary left: " << entry.path();
+  EXPECT_FALSE(fs::exists(out / "summary.json")) << "an interrupted run writes no summary of cells it did not run";
+
+  std::string command = "bench --experiment paper --quick --backends cpu --no-plot --out " + quoted(out);
+  const CliResult resumed = run_glint(command);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find("kept from an earlier run"), std::string::npos) << resumed.out;
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
 }
 
 TEST(RenderOutputFolder, AnEarlierRunIsRefusedUnlessOverwrite) {
