@@ -64,7 +64,9 @@ std::optional<std::size_t> first_non_finite_world_vertex(const Mesh& mesh, const
 }  // namespace
 
 void Scene::validate() const {
-  if (instances.empty() || triangle_count() == 0) fail("{}: the scene is empty (no triangles to render)", source);
+  // Only "no instances" here: counting triangles indexes meshes by the instances' mesh numbers, which are
+  // checked below (an out-of-range one was read past the mesh array, ASan in the asan preset).
+  if (instances.empty()) fail("{}: the scene is empty (no triangles to render)", source);
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     const Mesh& mesh = meshes[m];
     const std::size_t n = mesh.positions.size();
@@ -115,6 +117,7 @@ void Scene::validate() const {
            "scales or moves it beyond float range)",
            source, shown_name(), *v, untrusted_text(meshes[instance.mesh].name));
   }
+  if (triangle_count() == 0) fail("{}: the scene is empty (no triangles to render)", source);
   try {
     const WalkthroughAnimation paths(*this);  // checks the camera and light paths can be animated
   } catch (const Error& e) {
