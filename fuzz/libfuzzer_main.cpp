@@ -4,6 +4,8 @@
 #include "core/log.h"
 #include "fuzz_entries.h"
 
+#include <tbb/global_control.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +18,9 @@
 extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
   // Warnings about bad inputs are expected by the million; printing them would only slow the run.
   glint::set_log_level(glint::LogLevel::error);
+  // One thread per fuzzing process: the loaders' BVH (the default walkthrough's probe) is tiny, and
+  // run_fuzzers.sh runs one process per core already.
+  static tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   return 0;
 }
 
