@@ -15,6 +15,10 @@ out vec3 world_normal;
 out vec2 uv;
 flat out uint material;
 
+// The visibility G-buffer's id pass (visibility.vert.glsl) computes gl_Position the same way; invariant
+// in both makes the two G-buffer methods cover the same pixels with the same depths.
+invariant gl_Position;
+
 void main() {
   GpuInstance instance = instances[instance_index];
   vec4 world = instance.model * vec4(position_u.xyz, 1.0);

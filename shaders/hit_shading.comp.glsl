@@ -1,7 +1,8 @@
 #version 450 core
 // Hit shading (HitShadingPass, docs/hybrid.md): one invocation per listed ray. The hit record
 // {t, instance, prim, u, v} is turned back into a surface point from the GpuScene buffers (the
-// instance's mesh, its triangle `prim`, barycentrics u, v), and shaded exactly like the raster path:
+// instance's mesh, its triangle `prim`, barycentrics u, v: surface_point() of
+// include/surface_point.glsl, shared with the visibility G-buffer), and shaded exactly like the raster path:
 // the material's albedo times its texture, the light's cube-map shadow at the hit, and
 // surface_radiance() with the reflecting surface as the viewer. The result goes to the ray's pixel
 // of the reflection image as vec4(radiance, distance from the reflecting surface to the hit).
@@ -17,7 +18,7 @@
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
-#include "include/scene_buffers.glsl"
+#include "include/surface_point.glsl"
 #include "include/surface_lighting.glsl"
 #include "include/cube_shadow.glsl"
 
@@ -99,30 +100,18 @@ void main() {
     return;
   }
 
-  const GpuInstance instance = instances[hit.instance];
-  const GpuMeshRange range = mesh_ranges[instance.mesh];
-  const uint first = range.first_index + 3u * hit.prim;
-  const GpuVertex a = vertices[range.base_vertex + indices[first]];
-  const GpuVertex b = vertices[range.base_vertex + indices[first + 1u]];
-  const GpuVertex c = vertices[range.base_vertex + indices[first + 2u]];
-  const vec3 weights = vec3(1.0 - hit.u - hit.v, hit.u, hit.v);
+  // The surface point is rebuilt by the function the visibility G-buffer shares (surface_point.glsl).
+  const SceneTriangle triangle = scene_triangle(hit.instance, hit.prim);
+  const SurfacePoint surface = surface_point(triangle, vec2(hit.u, hit.v));
+  const vec3 position = surface.position;
+  const vec3 normal = surface.normal;
 
-  const vec3 pa = (instance.model * vec4(a.position_u.xyz, 1.0)).xyz;
-  const vec3 pb = (instance.model * vec4(b.position_u.xyz, 1.0)).xyz;
-  const vec3 pc = (instance.model * vec4(c.position_u.xyz, 1.0)).xyz;
-  const vec3 position = weights.x * pa + weights.y * pb + weights.z * pc;
-  const vec3 object_normal = weights.x * a.normal_v.xyz + weights.y * b.normal_v.xyz + weights.z * c.normal_v.xyz;
-  vec3 normal = mat3(instance.normal_matrix) * object_normal;
-  normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(cross(pb - pa, pc - pa));
-  const vec2 uva = vec2(a.position_u.w, a.normal_v.w), uvb = vec2(b.position_u.w, b.normal_v.w),
-             uvc = vec2(c.position_u.w, c.normal_v.w);
-  const vec2 uv = weights.x * uva + weights.y * uvb + weights.z * uvc;
-
-  const GpuMaterial material = materials[instance.material];
+  const GpuMaterial material = materials[surface.material];
   vec3 albedo = material.diffuse.rgb;
   if (material.texture_layer >= 0) {
-    const float lod = texture_lod(pb - pa, pc - pa, uvb - uva, uvc - uva, normal, ray, hit.t);
-    albedo *= trilinear_texel(material.texture_layer, uv, lod);
+    const float lod = texture_lod(triangle.position[1] - triangle.position[0], triangle.position[2] - triangle.position[0],
+                                  triangle.uv[1] - triangle.uv[0], triangle.uv[2] - triangle.uv[0], normal, ray, hit.t);
+    albedo *= trilinear_texel(material.texture_layer, surface.uv, lod);
   }
 
   const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, near_distance, texel_angle,

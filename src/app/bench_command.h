@@ -25,6 +25,7 @@ struct BenchOptions {
   int warmup = 3;                                  // unrecorded frames before each cell's first
   int interval = 10;                               // measured frames per interval mean
   int shadow_map_size = 1024;
+  std::string gbuffer = "raster";                  // raster|visibility, as glint render --gbuffer
   bool quick = false;   // smoke run: tiny resolution, few frames, cpu backend, atrium-simple
   bool no_plot = false;
   std::string out;

@@ -41,6 +41,7 @@ struct RenderOptions {
   std::string tone_map = "aces";
   int shadow_map_size = 1024;
   std::string shadow_cube_draw = "per-face";
+  std::string gbuffer = "raster";  // raster|visibility (render::GBufferMethod)
   int ssr_max_steps = 256;
   float ssr_thickness = 0.5f;
   float ssr_confidence = 0.9f;

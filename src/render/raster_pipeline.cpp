@@ -27,15 +27,20 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
     : scene_(&scene),
       settings_(validated(settings)),
       gpu_scene_(scene, gpu_scene_options(settings)),
-      targets_(width, height),
+      targets_(width, height, settings_.gbuffer == GBufferMethod::visibility),
       frame_constants_buffer_(create_buffer(sizeof(FrameConstants), nullptr, GL_DYNAMIC_STORAGE_BIT)),
-      gbuffer_(targets_),
       shadow_cube_(settings.shadow_map_size, settings.shadow_cube_draw),
       shadow_mask_(targets_),
       lighting_(targets_),
       shadow_chunks_(settings_.shadow_cube_draw == ShadowCubeDraw::per_face
                          ? std::optional<ShadowChunks>(std::in_place, scene, gpu_scene_)
                          : std::nullopt) {
+  if (settings_.gbuffer == GBufferMethod::visibility) {
+    visibility_ids_.emplace(targets_);
+    visibility_gbuffer_.emplace(targets_);
+  } else {
+    gbuffer_.emplace(targets_);
+  }
   check_gl("raster pipeline set-up");
 }
 
@@ -50,7 +55,12 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
   // A pass is timed only when there is a timer (PassScope cannot move, so it is emplaced in place).
   std::optional<GpuTimer::PassScope> timed;
   if (timer != nullptr) timed.emplace(*timer, "gbuffer");
-  gbuffer_.run(gpu_scene_);
+  if (gbuffer_) {
+    gbuffer_->run(gpu_scene_);
+  } else {
+    visibility_ids_->run(gpu_scene_);
+    visibility_gbuffer_->run(gpu_scene_);
+  }
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
   shadow_cube_.run(gpu_scene_, frame.light_position, world_bounds, shadow_chunks_ ? &*shadow_chunks_ : nullptr);

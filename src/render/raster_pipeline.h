@@ -1,5 +1,6 @@
 #pragma once
-// The raster half of the deferred renderer: G-buffer, shadow (cube map + mask), direct lighting.
+// The raster half of the deferred renderer: G-buffer (rasterised, or a visibility buffer resolved by
+// a compute pass: RasterSettings::gbuffer), shadow (cube map + mask), direct lighting.
 // Owns the GpuScene, the full-screen targets, the FrameConstants uniform buffer and the passes.
 // SSR, the ray-traced complement and resolve read the targets by texture id afterwards; the
 // FrameConstants UBO stays bound at kFrameConstantsBinding after render().
@@ -19,6 +20,8 @@
 #include "render/shadow_chunks.h"
 #include "render/shadow_cube_pass.h"
 #include "render/shadow_mask_pass.h"
+#include "render/visibility_gbuffer_pass.h"
+#include "render/visibility_id_pass.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
@@ -36,7 +39,8 @@ public:
   RasterPipeline(const Scene& scene, int width, int height, const RasterSettings& settings = {});
 
   // G-buffer, then shadow (cube map + mask, which needs this frame's G-buffer), then lighting. With
-  // a timer (inside its begin_frame/end_frame) the passes are timed as "gbuffer", "shadow", "light".
+  // a timer (inside its begin_frame/end_frame) the passes are timed as "gbuffer" (with the
+  // visibility method: the id draw and the compute resolve together), "shadow", "light".
   void render(const FrameState& frame, GpuTimer* timer = nullptr);
 
   GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
@@ -46,6 +50,7 @@ public:
   GLuint depth() const { return targets_.depth.id(); }
   GLuint shadow_mask() const { return targets_.shadow_mask.id(); }
   GLuint lit() const { return targets_.lit.id(); }
+  GLuint visibility_id() const { return targets_.visibility_id.id(); }  // 0 unless the visibility method
   GLuint shadow_cube_map() const { return shadow_cube_.cube_map(); }
   const ShadowCubePass& shadow_cube() const { return shadow_cube_; }  // size and far distance too
   GLuint frame_constants_buffer() const { return frame_constants_buffer_.id(); }
@@ -68,7 +73,10 @@ private:
   RasterTargets targets_;
   GlBuffer frame_constants_buffer_;
   FrameConstants frame_constants_;
-  GBufferPass gbuffer_;
+  // One G-buffer method is made, the one RasterSettings::gbuffer names.
+  std::optional<GBufferPass> gbuffer_;
+  std::optional<VisibilityIdPass> visibility_ids_;
+  std::optional<VisibilityGBufferPass> visibility_gbuffer_;
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;

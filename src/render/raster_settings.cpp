@@ -27,6 +27,20 @@ ShadowCubeDraw parse_shadow_cube_draw(std::string_view name) {
   fail("raster settings: unknown shadow cube draw '{}' (known: per-face, layered)", name);
 }
 
+std::string_view gbuffer_method_name(GBufferMethod method) {
+  switch (method) {
+    case GBufferMethod::raster: return "raster";
+    case GBufferMethod::visibility: return "visibility";
+  }
+  return "unknown";
+}
+
+GBufferMethod parse_gbuffer_method(std::string_view name) {
+  for (const GBufferMethod method : {GBufferMethod::raster, GBufferMethod::visibility})
+    if (gbuffer_method_name(method) == name) return method;
+  fail("raster settings: unknown G-buffer method '{}' (known: raster, visibility)", name);
+}
+
 void RasterSettings::validate() const {
   if (shadow_map_size < 1) fail("raster settings: shadow_map_size = {} must be at least 1", shadow_map_size);
   if (max_texture_layer_size < 1)

@@ -16,9 +16,22 @@ enum class ShadowCubeDraw { per_face, layered };
 std::string_view shadow_cube_draw_name(ShadowCubeDraw draw);
 ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
 
+// How the G-buffer is made (both give the same images; tests/render/visibility_gbuffer_test.cpp):
+//   raster      one draw whose fragment shader interpolates, samples textures and writes every image
+//   visibility  one draw writing only depth and a {instance, triangle} id, then one compute pass that
+//               rebuilds every image from the ids and the scene buffers (docs/render.md)
+// raster stays the default until the visibility buffer is measured faster on the H100 (on llvmpipe
+// it is not: docs/render.md, "Visibility G-buffer").
+enum class GBufferMethod { raster, visibility };
+
+// "raster", "visibility"; parse_gbuffer_method is the inverse (glint::Error naming the known ones).
+std::string_view gbuffer_method_name(GBufferMethod method);
+GBufferMethod parse_gbuffer_method(std::string_view name);
+
 struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels
   ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
+  GBufferMethod gbuffer = GBufferMethod::raster;
   float pcf_radius_texels = 1.5f;     // 0 = one shadow sample (hard edges), else 20-sample PCF
   float constant_bias_texels = 0.5f;  // distance bias at normal incidence
   float slope_bias_texels = 1.0f;     // times tan(angle between normal and light) x (1 + PCF radius)

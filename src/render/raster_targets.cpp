@@ -19,7 +19,7 @@ GlTexture make_target(GLenum format, int width, int height) {
 
 }  // namespace
 
-RasterTargets::RasterTargets(int width_, int height_) : width(width_), height(height_) {
+RasterTargets::RasterTargets(int width_, int height_, bool visibility_ids) : width(width_), height(height_) {
   if (width <= 0 || height <= 0) fail("raster targets: invalid size {}x{}", width, height);
   albedo_reflectivity = make_target(kAlbedoReflectivityFormat, width, height);
   world_position = make_target(kWorldPositionFormat, width, height);
@@ -28,6 +28,7 @@ RasterTargets::RasterTargets(int width_, int height_) : width(width_), height(he
   depth = make_target(kDepthFormat, width, height);
   shadow_mask = make_target(kShadowMaskFormat, width, height);
   lit = make_target(kLitFormat, width, height);
+  if (visibility_ids) visibility_id = make_target(kVisibilityIdFormat, width, height);
 }
 
 }  // namespace glint::render

@@ -6,7 +6,9 @@
 namespace glint::render {
 
 struct RasterTargets {
-  RasterTargets(int width, int height);  // throws glint::Error for a non-positive size
+  // Throws glint::Error for a non-positive size. `visibility_ids`: also make visibility_id (only the
+  // visibility G-buffer writes it).
+  RasterTargets(int width, int height, bool visibility_ids = false);
 
   int width = 0;
   int height = 0;
@@ -17,6 +19,7 @@ struct RasterTargets {
   GlTexture depth;                   // kDepthFormat
   GlTexture shadow_mask;             // kShadowMaskFormat
   GlTexture lit;                     // kLitFormat
+  GlTexture visibility_id;           // kVisibilityIdFormat; id 0 unless made with visibility_ids
 };
 
 }  // namespace glint::render

@@ -18,6 +18,9 @@ inline constexpr GLenum kWorldNormalRoughnessFormat = GL_RGBA16F;
 inline constexpr GLenum kMaterialIdFormat = GL_R32UI;
 // Standard perspective depth of the camera's projection.
 inline constexpr GLenum kDepthFormat = GL_DEPTH_COMPONENT32F;
+// Visibility ids (VisibilityIdPass, only with the visibility G-buffer): x = instance + 1 (0 =
+// background), y = the triangle's number in its mesh; VisibilityGBufferPass rebuilds the G-buffer.
+inline constexpr GLenum kVisibilityIdFormat = GL_RG32UI;
 
 // Shadow mask (ShadowMaskPass): 1 lit, 0 shadowed, fractional at PCF edges.
 inline constexpr GLenum kShadowMaskFormat = GL_R8;

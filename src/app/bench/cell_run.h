@@ -23,6 +23,7 @@ struct CellRunSettings {
   int warmup_frames = 3;       // rendered before the measured frames, not recorded
   int shadow_map_size = 1024;
   std::string command_line;    // for the render settings' record
+  std::string gbuffer = "raster";  // glint render --gbuffer
 };
 
 // cells/<id>.csv, cells/<id>.json and (quality cells) the folder of images.

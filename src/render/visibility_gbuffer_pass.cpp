@@ -1,0 +1,44 @@
+#include "render/visibility_gbuffer_pass.h"
+
+#include "core/error.h"
+#include "gl/gl_check.h"
+#include "gl/gl_pass_scope.h"
+#include "render/compute_dispatch.h"
+#include "render/render_targets.h"
+
+namespace glint::render {
+namespace {
+
+// Image units of visibility_gbuffer.comp.glsl (texture unit 0 is the material array, gpu_scene.h).
+constexpr GLuint kIdUnit = 0;
+constexpr GLuint kAlbedoUnit = 1;
+constexpr GLuint kPositionUnit = 2;
+constexpr GLuint kNormalUnit = 3;
+constexpr GLuint kMaterialIdUnit = 4;
+
+}  // namespace
+
+VisibilityGBufferPass::VisibilityGBufferPass(const RasterTargets& targets)
+    : targets_(&targets), program_(ShaderProgram::from_embedded({"visibility_gbuffer.comp.glsl"})) {
+  if (targets.visibility_id.id() == 0) fail("visibility G-buffer pass: the raster targets have no visibility id image");
+  check_gl("visibility G-buffer pass set-up");
+}
+
+void VisibilityGBufferPass::run(const GpuScene& scene) {
+  GlPassScope scope("visibility_gbuffer");
+  const RasterTargets& t = *targets_;
+  scene.bind_resources();
+  glBindImageTexture(kIdUnit, t.visibility_id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, kVisibilityIdFormat);
+  glBindImageTexture(kAlbedoUnit, t.albedo_reflectivity.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kAlbedoReflectivityFormat);
+  glBindImageTexture(kPositionUnit, t.world_position.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kWorldPositionFormat);
+  glBindImageTexture(kNormalUnit, t.world_normal_roughness.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     kWorldNormalRoughnessFormat);
+  glBindImageTexture(kMaterialIdUnit, t.material_id.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kMaterialIdFormat);
+  program_.use();
+  dispatch_over_image(t.width, t.height);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT);
+  check_gl("visibility G-buffer pass");
+}
+
+}  // namespace glint::render
