@@ -13,29 +13,40 @@ struct TlasView {
   const Blas* blases = nullptr;
 };
 
+// A world ray's origin and direction in an instance's object space (an affine map, so t is the same
+// in both spaces). Every two-level traversal (CPU binary and wide, GPU) enters a BLAS through this.
+struct ObjectRay {
+  vec3 origin;
+  vec3 direction;
+};
+
+GLINT_HOST_DEVICE inline ObjectRay to_object_space(const Instance& instance, const Ray& ray) {
+  return {vec3(instance.world_to_object * vec4(ray.origin, 1.0f)),
+          vec3(instance.world_to_object * vec4(ray.direction, 0.0f))};
+}
+
 GLINT_HOST_DEVICE inline Hit trace_closest(const TlasView& tlas, const Ray& ray) {
   Hit hit;
   float t_max = ray.t_max;
   traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t index, float& t_limit) {
     const Instance& instance = tlas.instances[index];
-    const vec3 origin(instance.world_to_object * vec4(ray.origin, 1.0f));
-    const vec3 direction(instance.world_to_object * vec4(ray.direction, 0.0f));
+    const ObjectRay local = to_object_space(instance, ray);
     const Blas& blas = tlas.blases[instance.blas];
-    if (!intersect_closest(blas.bvh, blas.mesh, origin, direction, ray.t_min, t_limit, hit)) return false;
+    if (!intersect_closest(blas.bvh, blas.mesh, local.origin, local.direction, ray.t_min, t_limit, hit)) return false;
     hit.instance = index;
     return true;
   });
   return hit;
 }
 
+// The same walk in any-hit mode: stops at the first triangle found in any instance.
 GLINT_HOST_DEVICE inline bool trace_any(const TlasView& tlas, const Ray& ray) {
   float t_max = ray.t_max;
   return traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t index, float&) {
     const Instance& instance = tlas.instances[index];
-    const vec3 origin(instance.world_to_object * vec4(ray.origin, 1.0f));
-    const vec3 direction(instance.world_to_object * vec4(ray.direction, 0.0f));
+    const ObjectRay local = to_object_space(instance, ray);
     const Blas& blas = tlas.blases[instance.blas];
-    return intersect_any(blas.bvh, blas.mesh, origin, direction, ray.t_min, ray.t_max);
+    return intersect_any(blas.bvh, blas.mesh, local.origin, local.direction, ray.t_min, ray.t_max);
   });
 }
 

@@ -65,8 +65,7 @@ void trace_closest(const WideBvh4& bvh, std::span<const Ray> rays, std::span<Hit
 
 void trace_closest(const WideBvh8& bvh, std::span<const Ray> rays, std::span<Hit> hits) {
   check_wide_traceable(bvh, rays.size(), hits.size());
-  trace_parallel(bvh, rays, hits,
-                 wide_simd_path() == WideSimdPath::avx2 ? wide_kernel::closest_avx8 : wide_kernel::closest_sse8);
+  trace_parallel(bvh, rays, hits, wide_closest_kernel8());
 }
 
 WideClosestKernel8 wide_closest_kernel8() {
@@ -80,8 +79,11 @@ void trace_any(const WideBvh4& bvh, std::span<const Ray> rays, std::span<uint8_t
 
 void trace_any(const WideBvh8& bvh, std::span<const Ray> rays, std::span<uint8_t> occluded) {
   check_wide_traceable(bvh, rays.size(), occluded.size());
-  trace_parallel(bvh, rays, occluded,
-                 wide_simd_path() == WideSimdPath::avx2 ? wide_kernel::any_avx8 : wide_kernel::any_sse8);
+  trace_parallel(bvh, rays, occluded, wide_any_kernel8());
+}
+
+WideAnyKernel8 wide_any_kernel8() {
+  return wide_simd_path() == WideSimdPath::avx2 ? wide_kernel::any_avx8 : wide_kernel::any_sse8;
 }
 
 }  // namespace glint::accel

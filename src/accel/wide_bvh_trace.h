@@ -29,6 +29,9 @@ void trace_any(const WideBvh8& bvh, std::span<const Ray> rays, std::span<uint8_t
 // the BVH's depth once. Pick it once per batch: the path may be forced between batches.
 using WideClosestKernel8 = void (*)(const WideBvh8& bvh, const Ray* rays, Hit* hits, size_t count);
 WideClosestKernel8 wide_closest_kernel8();
+// The same for the any-hit kernel trace_any(const WideBvh8&, ...) would use now.
+using WideAnyKernel8 = void (*)(const WideBvh8& bvh, const Ray* rays, uint8_t* occluded, size_t count);
+WideAnyKernel8 wide_any_kernel8();
 
 // Which kernel 8-wide BVHs use.
 enum class WideSimdPath { sse, avx2 };

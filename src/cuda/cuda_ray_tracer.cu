@@ -15,6 +15,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace glint::cuda {
 namespace {
@@ -83,6 +84,7 @@ public:
   void build(const Scene& scene, const rt::AccelOptions& options) override;
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
   void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const override;
   rt::RayTracerStats stats() const override;
   std::string_view name() const override { return "cuda"; }
   rt::DeviceTracing* device_tracing() override { return this; }
@@ -90,6 +92,8 @@ public:
   void* stream() override { return stream_.get(); }
   void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                             uint32_t capacity) override;
+  void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                        uint32_t capacity) override;
   double last_trace_ms() override;
   std::optional<double> last_update_ms() override { return update_timer_.elapsed_ms(); }
   vec3* device_positions(uint32_t mesh) override;
@@ -122,10 +126,15 @@ private:
     return {tlas_.view(), instances_.device(), blas_views_.device()};
   }
   void check_overflow() const;
-  TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+  // Either output (hits: closest hit; occluded: any hit), the other null.
+  TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, uint32_t* occluded, const uint32_t* ray_count,
                            uint32_t capacity) const {
-    return {rays, hits, ray_count, capacity, overflow_.data(), next_ray_.data(), options_.cuda_trace_kernel};
+    TraceLaunch launch{rays, hits, ray_count, capacity, overflow_.data(), next_ray_.data(), options_.cuda_trace_kernel};
+    launch.occluded = occluded;
+    return launch;
   }
+  // Uploads host rays for trace_closest / trace_any (checked: as many as `results`, fewer than 2^32).
+  uint32_t upload_host_rays(std::span<const accel::Ray> rays, std::size_t results, const char* result_name) const;
 
   // Every call enqueues here; non-blocking, so the legacy default stream does not order it.
   CudaStream stream_{cudaStreamNonBlocking};
@@ -154,6 +163,8 @@ private:
   // Host-side tracing: the rays and hits in device memory (kept, so repeated calls allocate nothing).
   mutable DeviceBuffer<accel::Ray> host_rays_;
   mutable DeviceBuffer<accel::Hit> host_hits_;
+  mutable DeviceBuffer<uint32_t> host_occluded_;
+  mutable std::vector<uint32_t> host_occluded_download_;
   mutable DeviceBuffer<uint32_t> overflow_;
   mutable DeviceBuffer<uint32_t> next_ray_;  // the persistent kernel's ray counter
   mutable EventTimer trace_timer_;
@@ -356,22 +367,47 @@ void CudaRayTracer::check_overflow() const {
                  " builder); its hits are wrong: use another builder");
 }
 
+uint32_t CudaRayTracer::upload_host_rays(std::span<const accel::Ray> rays, std::size_t results,
+                                         const char* result_name) const {
+  if (rays.size() != results)
+    fail_message("rt cuda: " + std::to_string(rays.size()) + " rays but " + std::to_string(results) + " " + result_name);
+  if (rays.size() > 0xFFFFFFFFu) fail_message("rt cuda: more than 2^32 - 1 rays in one call");
+  if (!rays.empty()) host_rays_.upload(rays, stream_.get());
+  return static_cast<uint32_t>(rays.size());
+}
+
 void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
   require_built("trace_closest()");
-  if (rays.size() != hits.size())
-    fail_message("rt cuda: " + std::to_string(rays.size()) + " rays but " + std::to_string(hits.size()) + " hits");
-  if (rays.empty()) return;
-  if (rays.size() > 0xFFFFFFFFu) fail_message("rt cuda: more than 2^32 - 1 rays in one call");
-  const auto count = static_cast<uint32_t>(rays.size());
-  host_rays_.upload(rays, stream_.get());
+  const uint32_t count = upload_host_rays(rays, hits.size(), "hits");
+  if (count == 0) return;
   host_hits_.resize(count);
   overflow_.fill_zero(stream_.get());
   trace_timer_.start(stream_.get());
-  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, count), stream_.get());
+  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count),
+                       stream_.get());
   trace_timer_.stop(stream_.get());
   GLINT_CUDA_CHECK(
       cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();
+}
+
+void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  require_built("trace_any()");
+  const uint32_t count = upload_host_rays(rays, occluded.size(), "occlusion results");
+  if (count == 0) return;
+  host_occluded_.resize(count);
+  host_occluded_download_.resize(count);
+  overflow_.fill_zero(stream_.get());
+  trace_timer_.start(stream_.get());
+  launch_trace_any(tlas_view(), trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count),
+                   stream_.get());
+  trace_timer_.stop(stream_.get());
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(host_occluded_download_.data(), host_occluded_.data(), count * sizeof(uint32_t),
+                                   cudaMemcpyDeviceToHost, stream_.get()));
+  check_overflow();  // waits for the copy
+  // The device side writes one uint32_t per ray (what GLSL reads); the host interface has one byte.
+  std::transform(host_occluded_download_.begin(), host_occluded_download_.end(), occluded.begin(),
+                 [](uint32_t value) { return static_cast<uint8_t>(value != 0 ? 1 : 0); });
 }
 
 void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
@@ -379,7 +415,16 @@ void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hit
   require_built("trace_closest_device()");
   overflow_.fill_zero(stream_.get());
   trace_timer_.start(stream_.get());
-  launch_trace_closest(tlas_view(), trace_launch(rays, hits, ray_count, capacity), stream_.get());
+  launch_trace_closest(tlas_view(), trace_launch(rays, hits, nullptr, ray_count, capacity), stream_.get());
+  trace_timer_.stop(stream_.get());
+}
+
+void CudaRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                     uint32_t capacity) {
+  require_built("trace_any_device()");
+  overflow_.fill_zero(stream_.get());
+  trace_timer_.start(stream_.get());
+  launch_trace_any(tlas_view(), trace_launch(rays, nullptr, occluded, ray_count, capacity), stream_.get());
   trace_timer_.stop(stream_.get());
 }
 

@@ -26,28 +26,35 @@ __device__ inline accel::Ray load_ray(const accel::Ray* rays, uint32_t i) {
   return ray;
 }
 
-// What one thread does with one ray, per kind of structure.
+// What one thread does with ray slot i, per query and kind of structure: trace it, write its result.
 struct TwoLevelTrace {
   accel::TlasView tlas;
-  __device__ accel::Hit operator()(const accel::Ray& ray, bool& overflow) const {
-    return gpu_trace_closest(tlas, ray, overflow);
+  __device__ void operator()(const TraceLaunch& launch, uint32_t i, const accel::Ray& ray, bool& overflow) const {
+    launch.hits[i] = gpu_trace_closest(tlas, ray, overflow);
+  }
+};
+
+struct TwoLevelOcclusion {
+  accel::TlasView tlas;
+  __device__ void operator()(const TraceLaunch& launch, uint32_t i, const accel::Ray& ray, bool& overflow) const {
+    launch.occluded[i] = gpu_trace_any(tlas, ray, overflow) ? 1u : 0u;
   }
 };
 
 struct SingleLevelTrace {
   accel::Blas blas;
-  __device__ accel::Hit operator()(const accel::Ray& ray, bool& overflow) const {
+  __device__ void operator()(const TraceLaunch& launch, uint32_t i, const accel::Ray& ray, bool& overflow) const {
     accel::Hit hit;
     float t_max = ray.t_max;
     if (gpu_intersect_closest(blas, ray.origin, ray.direction, ray.t_min, t_max, hit, overflow)) hit.instance = 0;
-    return hit;
+    launch.hits[i] = hit;
   }
 };
 
 template <typename TraceOne>
 __device__ inline void trace_slot(const TraceOne& trace_one, const TraceLaunch& launch, uint32_t i) {
   bool overflowed = false;
-  launch.hits[i] = trace_one(load_ray(launch.rays, i), overflowed);
+  trace_one(launch, i, load_ray(launch.rays, i), overflowed);
   if (overflowed) atomicOr(launch.overflow, 1u);
 }
 
@@ -137,6 +144,12 @@ __global__ void instance_boxes_kernel(const accel::Instance* instances, uint32_t
 
 void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
   launch_kernel(TwoLevelTrace{tlas}, launch, stream);
+}
+
+void launch_trace_any(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
+  if (launch.capacity != 0 && launch.occluded == nullptr)
+    fail_message("rt cuda: an any-hit launch needs an occlusion buffer");
+  launch_kernel(TwoLevelOcclusion{tlas}, launch, stream);
 }
 
 void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream) {

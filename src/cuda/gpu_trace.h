@@ -1,6 +1,6 @@
 #pragma once
-// The closest-hit kernel over a ray list in device memory (the CUDA backend's trace), and the
-// instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
+// The closest-hit and any-hit (occlusion) kernels over a ray list in device memory (the CUDA
+// backend's trace), and the instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
 #include "accel/kdtree.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
@@ -12,8 +12,10 @@
 
 namespace glint::cuda {
 
-// A closest-hit launch over a ray list in device memory: hits[i] = closest hit of rays[i] for
-// i < min(*ray_count, capacity); ray_count may be null (then `capacity` rays). *overflow (device
+// A launch over a ray list in device memory: for i < min(*ray_count, capacity) (ray_count may be
+// null: then `capacity` rays), a closest-hit launch writes hits[i] = closest hit of rays[i], an
+// any-hit launch occluded[i] = 1 when rays[i] hits anything within [t_min, t_max], else 0 (the other
+// output pointer is unused and may be null). *overflow (device
 // memory) is set to 1 when some ray's traversal stack overflowed (its hit may then be wrong).
 // next_ray is a device counter the persistent kernel hands rays out with (zeroed by the launch;
 // unused by the other kernel, may be null there).
@@ -25,10 +27,15 @@ struct TraceLaunch {
   uint32_t* overflow = nullptr;
   uint32_t* next_ray = nullptr;
   TraceKernel kernel = kDefaultTraceKernel;
+  uint32_t* occluded = nullptr;  // last, so positional initialisers of closest-hit launches stay valid
 };
 
 // Through `tlas` (device views): Hit.instance is the instance index. Asynchronous on `stream`.
 void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
+
+// The occlusion query through `tlas` into launch.occluded (the same kernels, the traversal in any-hit
+// mode). Asynchronous on `stream`.
+void launch_trace_any(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
 
 // Through one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
 void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream);

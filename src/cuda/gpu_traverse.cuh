@@ -1,5 +1,5 @@
 #pragma once
-// Single-ray BVH traversal on the GPU, one thread per ray. The same algorithm as accel/traverse.h
+// Single-ray BVH traversal on the GPU, one thread per ray, closest hit or any hit (occlusion). The same algorithm as accel/traverse.h
 // (depth first, nearer child first, the farther child pushed with its entry distance and skipped on
 // pop once a closer hit is known) and the same conservative box and watertight triangle tests, so
 // the hits equal the CPU backend's; what differs is what the GPU needs:
@@ -36,8 +36,9 @@ __device__ inline accel::BvhNode load_node(const accel::BvhNode* nodes, uint32_t
 
 // Visits the primitives of the leaves the segment [t_min, t_max] enters, nearest subtree first;
 // intersect_prim(prim, t_max) returns true on a hit and may lower t_max. Returns whether anything
-// was hit; sets overflow (and stops) when the stack would overflow.
-template <typename IntersectPrim>
+// was hit; sets overflow (and stops) when the stack would overflow. With kAnyHit (a compile-time
+// switch, so the closest-hit kernel is unchanged), returns true at the first hit.
+template <bool kAnyHit, typename IntersectPrim>
 __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& origin, const vec3& direction,
                                         float t_min, float& t_max, bool& overflow, IntersectPrim&& intersect_prim) {
   if (bvh.node_count == 0) return false;
@@ -53,8 +54,12 @@ __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& o
   for (;;) {
     if (node.is_leaf()) {
       const uint32_t end = node.first + node.prim_count;
-      for (uint32_t slot = node.first; slot != end; ++slot)
-        if (intersect_prim(__ldg(bvh.prim_indices + slot), t_max)) hit = true;
+      for (uint32_t slot = node.first; slot != end; ++slot) {
+        if (intersect_prim(__ldg(bvh.prim_indices + slot), t_max)) {
+          hit = true;
+          if constexpr (kAnyHit) return true;
+        }
+      }
     } else {
       const accel::BvhNode left = load_node(bvh.nodes, node.left());
       const accel::BvhNode right = load_node(bvh.nodes, node.right());
@@ -94,8 +99,20 @@ __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& o
 __device__ inline bool gpu_intersect_closest(const accel::Blas& blas, const vec3& origin, const vec3& direction,
                                              float t_min, float& t_max, accel::Hit& hit, bool& overflow) {
   const accel::WatertightRay ray = accel::make_watertight_ray(origin, direction);
-  return gpu_traverse_bvh(blas.bvh, origin, direction, t_min, t_max, overflow, [&](uint32_t prim, float& t_limit) {
+  return gpu_traverse_bvh<false>(blas.bvh, origin, direction, t_min, t_max, overflow,
+                                 [&](uint32_t prim, float& t_limit) {
     return accel::record_closer_hit(ray, blas.mesh, prim, t_min, t_limit, hit);
+  });
+}
+
+// Whether anything in one BLAS (object space) lies within [t_min, t_max]; stops at the first hit.
+__device__ inline bool gpu_intersect_any(const accel::Blas& blas, const vec3& origin, const vec3& direction,
+                                         float t_min, float t_max, bool& overflow) {
+  const accel::WatertightRay ray = accel::make_watertight_ray(origin, direction);
+  return gpu_traverse_bvh<true>(blas.bvh, origin, direction, t_min, t_max, overflow,
+                                [&](uint32_t prim, float& t_limit) {
+    accel::TriangleHit tri_hit;
+    return accel::intersect_triangle(ray, blas.mesh.triangle(prim), t_min, t_limit, tri_hit);
   });
 }
 
@@ -104,16 +121,30 @@ __device__ inline bool gpu_intersect_closest(const accel::Blas& blas, const vec3
 __device__ inline accel::Hit gpu_trace_closest(const accel::TlasView& tlas, const accel::Ray& ray, bool& overflow) {
   accel::Hit hit;
   float t_max = ray.t_max;
-  gpu_traverse_bvh(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow, [&](uint32_t index, float& t_limit) {
+  gpu_traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
+                          [&](uint32_t index, float& t_limit) {
     const accel::Instance& instance = tlas.instances[index];
-    const vec3 origin(instance.world_to_object * vec4(ray.origin, 1.0f));
-    const vec3 direction(instance.world_to_object * vec4(ray.direction, 0.0f));
-    if (!gpu_intersect_closest(tlas.blases[instance.blas], origin, direction, ray.t_min, t_limit, hit, overflow))
+    const accel::ObjectRay local = accel::to_object_space(instance, ray);
+    if (!gpu_intersect_closest(tlas.blases[instance.blas], local.origin, local.direction, ray.t_min, t_limit, hit,
+                               overflow))
       return false;
     hit.instance = index;
     return true;
   });
   return hit;
+}
+
+// The occlusion query through both levels: true at the first triangle found within [t_min, t_max] in
+// any instance (the same walk in any-hit mode, the same stack guard).
+__device__ inline bool gpu_trace_any(const accel::TlasView& tlas, const accel::Ray& ray, bool& overflow) {
+  float t_max = ray.t_max;
+  return gpu_traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
+                                [&](uint32_t index, float&) {
+    const accel::Instance& instance = tlas.instances[index];
+    const accel::ObjectRay local = accel::to_object_space(instance, ray);
+    return gpu_intersect_any(tlas.blases[instance.blas], local.origin, local.direction, ray.t_min, ray.t_max,
+                             overflow);
+  });
 }
 
 }  // namespace glint::cuda

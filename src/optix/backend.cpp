@@ -64,6 +64,19 @@ struct OptixRayTracer::State {
     if (!built) fail("rt optix: {} before build()", what);
   }
 
+  // A device-side query (`params` names its output) over the IAS, between the trace events.
+  void launch_device(OptixLaunchParams& params, const accel::Ray* rays, const std::uint32_t* ray_count,
+                     std::uint32_t capacity) {
+    params.root = ias.handle();
+    params.rays = as_ray_records(rays);
+    params.ray_count = ray_count;
+    params.capacity = capacity;
+    trace_start.record(stream.get());
+    pipeline.launch(params, stream.get());
+    trace_end.record(stream.get());
+    trace_recorded = true;
+  }
+
   // Dirty GASes rebuilt or refitted, then the IAS rebuilt over the (possibly new) GAS handles; all
   // enqueued on the stream.
   void update_structures(std::span<const std::uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
@@ -180,6 +193,13 @@ void OptixRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<a
   (void)s.host_trace.trace(s.pipeline, s.ias.handle(), rays, hits, s.stream.get());
 }
 
+void OptixRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  State& s = *state_;
+  s.require_built("trace_any()");
+  const std::lock_guard lock(s.host_trace_mutex);
+  (void)s.host_trace.trace_any(s.pipeline, s.ias.handle(), rays, occluded, s.stream.get());
+}
+
 rt::RayTracerStats OptixRayTracer::stats() const {
   State& s = *state_;
   rt::RayTracerStats stats;
@@ -201,15 +221,17 @@ void OptixRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hi
   State& s = *state_;
   s.require_built("trace_closest_device()");
   OptixLaunchParams params;
-  params.root = s.ias.handle();
-  params.rays = as_ray_records(rays);
   params.hits = as_hit_records(hits);
-  params.ray_count = ray_count;
-  params.capacity = capacity;
-  s.trace_start.record(s.stream.get());
-  s.pipeline.launch(params, s.stream.get());
-  s.trace_end.record(s.stream.get());
-  s.trace_recorded = true;
+  s.launch_device(params, rays, ray_count, capacity);
+}
+
+void OptixRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                      uint32_t capacity) {
+  State& s = *state_;
+  s.require_built("trace_any_device()");
+  OptixLaunchParams params;
+  params.occluded = occluded;
+  s.launch_device(params, rays, ray_count, capacity);
 }
 
 double OptixRayTracer::last_trace_ms() {

@@ -2,7 +2,7 @@
 // The optix backend (docs/optix.md): NVIDIA OptiX's structures behind glint's RayTracer interface,
 // the paper's engine in its modern form and the GPU reference glint's own CUDA structures are
 // measured against. One GAS per mesh (built over the mesh's own index buffer) and one IAS over the
-// scene's instances; the closest-hit query runs the device programs of src/optix/device/.
+// scene's instances; the closest-hit and occlusion queries run the device programs of src/optix/device/.
 //
 // Builder choice: AccelOptions::optix_build (optix-fasttrace: PREFER_FAST_TRACE, static GASes
 // compacted; optix-fastbuild: PREFER_FAST_BUILD). update() with refit or auto updates the
@@ -29,6 +29,8 @@ public:
   // Synchronous: returns when the structures are up to date on the GPU.
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
   void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  // The same pipeline's occlusion query (terminate on first hit, no hit programs).
+  void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const override;
   // build_ms: wall clock of build() (synchronous); last_update_ms: GPU time (CUDA events) of the last
   // update's structure work, waiting for it when it is still running. Memory: GASes, IAS, instance
   // records and the device copy of the meshes. blas_sah_drift is absent (OptiX hides its nodes).
@@ -39,6 +41,8 @@ public:
   void* stream() override;
   void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                             uint32_t capacity) override;
+  void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                        uint32_t capacity) override;
   double last_trace_ms() override;
   std::optional<double> last_update_ms() override;
   vec3* device_positions(uint32_t mesh) override;

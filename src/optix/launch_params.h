@@ -30,7 +30,11 @@ struct OptixHitRecord {
 struct OptixLaunchParams {
   OptixTraversableHandle root = 0;  // the IAS over the scene's instances, or one GAS (accel-bench)
   const OptixRayRecord* rays = nullptr;
+  // Which query: null `occluded` traces closest hits into `hits`; otherwise the occlusion query
+  // (terminate on first hit) writes occluded[i] = 1 when ray i hits anything, else 0, and `hits` is
+  // unused.
   OptixHitRecord* hits = nullptr;
+  std::uint32_t* occluded = nullptr;
   // Rays to trace, read on the GPU: the launch has `capacity` threads and those at or past
   // *ray_count return at once, so the host never waits for the count.
   const std::uint32_t* ray_count = nullptr;

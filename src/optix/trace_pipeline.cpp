@@ -36,8 +36,8 @@ OptixPipelineCompileOptions pipeline_compile_options(bool validation) {
 }
 
 bool same_params(const OptixLaunchParams& a, const OptixLaunchParams& b) {
-  return a.root == b.root && a.rays == b.rays && a.hits == b.hits && a.ray_count == b.ray_count &&
-         a.capacity == b.capacity;
+  return a.root == b.root && a.rays == b.rays && a.hits == b.hits && a.occluded == b.occluded &&
+         a.ray_count == b.ray_count && a.capacity == b.capacity;
 }
 
 }  // namespace
@@ -117,12 +117,13 @@ void TraceClosestPipeline::launch(const OptixLaunchParams& params, cudaStream_t 
   if (params.capacity == 0) return;
   // The pointers are the same frame after frame (the GL buffers shared with CUDA), so the
   // parameters are uploaded only when they change.
-  if (!params_uploaded_ || !same_params(params, last_params_)) {
-    params_.upload(std::span<const OptixLaunchParams>(&params, 1), stream);
-    last_params_ = params;
-    params_uploaded_ = true;
+  ParamsSlot& slot = params_[params.occluded != nullptr ? 1 : 0];
+  if (!slot.uploaded || !same_params(params, slot.last)) {
+    slot.device.upload(std::span<const OptixLaunchParams>(&params, 1), stream);
+    slot.last = params;
+    slot.uploaded = true;
   }
-  GLINT_OPTIX_CHECK(optixLaunch(pipeline_, stream, reinterpret_cast<CUdeviceptr>(params_.device()),
+  GLINT_OPTIX_CHECK(optixLaunch(pipeline_, stream, reinterpret_cast<CUdeviceptr>(slot.device.device()),
                                 sizeof(OptixLaunchParams), &sbt_, params.capacity, 1, 1));
 }
 

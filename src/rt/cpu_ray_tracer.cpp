@@ -130,6 +130,14 @@ void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<acc
     accel::trace_closest(tlas_, blases_, rays, hits);
 }
 
+void CpuRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  require_built("trace_any()");
+  if (options_.wide_traversal)
+    trace_any_wide(tlas_, blases_, wide_blases_, rays, occluded);
+  else
+    accel::trace_any(tlas_, blases_, rays, occluded);
+}
+
 RayTracerStats CpuRayTracer::stats() const {
   RayTracerStats stats;
   stats.backend = std::string(name());

@@ -1,7 +1,8 @@
 #pragma once
 // The cpu backend: glint's own two-level structure (accel/tlas.h). One BLAS per mesh, built with
 // AccelOptions::builder over the mesh's object-space triangles, a binned-SAH TLAS over
-// Scene::instances, traced with accel's TBB batch (accel/tlas_trace.h).
+// Scene::instances, traced with accel's TBB batch (accel/tlas_trace.h). trace_any walks the same
+// structures in accel's any-hit mode (traverse_bvh<true>), ending each ray at its first hit.
 //
 // update(): every dirty mesh's BLAS is rebuilt (rebuild), refitted (refit; a glint::Error for a
 // builder whose BVHs cannot be refitted, e.g. sbvh), or, for automatic, refitted and then rebuilt
@@ -28,6 +29,7 @@ public:
   void build(const Scene& scene, const AccelOptions& options) override;
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) override;
   void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const override;
   RayTracerStats stats() const override;
   std::string_view name() const override { return "cpu"; }
 

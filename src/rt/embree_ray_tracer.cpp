@@ -21,6 +21,24 @@ double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// glint's ray as Embree's: the same inclusive [tnear, tfar], every instance (mask), no motion.
+RTCRay embree_ray(const accel::Ray& ray) {
+  RTCRay query;
+  query.org_x = ray.origin.x;
+  query.org_y = ray.origin.y;
+  query.org_z = ray.origin.z;
+  query.tnear = ray.t_min;
+  query.dir_x = ray.direction.x;
+  query.dir_y = ray.direction.y;
+  query.dir_z = ray.direction.z;
+  query.time = 0.0f;
+  query.tfar = ray.t_max;
+  query.mask = 0xFFFFFFFFu;
+  query.id = 0;
+  query.flags = 0;
+  return query;
+}
+
 }  // namespace
 
 EmbreeRayTracer::EmbreeRayTracer() : device_(std::make_unique<accel::EmbreeDevice>()) {}
@@ -153,20 +171,8 @@ void EmbreeRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      const accel::Ray& ray = rays[i];
       RTCRayHit query;
-      query.ray.org_x = ray.origin.x;
-      query.ray.org_y = ray.origin.y;
-      query.ray.org_z = ray.origin.z;
-      query.ray.tnear = ray.t_min;
-      query.ray.dir_x = ray.direction.x;
-      query.ray.dir_y = ray.direction.y;
-      query.ray.dir_z = ray.direction.z;
-      query.ray.time = 0.0f;
-      query.ray.tfar = ray.t_max;
-      query.ray.mask = 0xFFFFFFFFu;
-      query.ray.id = 0;
-      query.ray.flags = 0;
+      query.ray = embree_ray(rays[i]);
       query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(top_, &context, &query);
@@ -183,6 +189,22 @@ void EmbreeRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<
     }
   });
   device_->check("trace_closest");
+}
+
+void EmbreeRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  require_built("trace_any()");
+  accel::check_batch_sizes(rays.size(), occluded.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), kRayGrain), [&](const auto& range) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      RTCRay query = embree_ray(rays[i]);
+      // Embree's occlusion query stops at the first hit and marks it by setting tfar to -infinity.
+      rtcOccluded1(top_, &context, &query);
+      occluded[i] = query.tfar == -accel::kInfinity ? 1 : 0;
+    }
+  });
+  device_->check("trace_any");
 }
 
 RayTracerStats EmbreeRayTracer::stats() const {

@@ -86,4 +86,9 @@ void InstanceSubsetTracer::trace_closest(std::span<const accel::Ray> rays, std::
     if (hit.valid()) hit.instance = instances_.at(hit.instance);
 }
 
+void InstanceSubsetTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  // Nothing to renumber: whether a ray is occluded does not say by which instance.
+  inner_->trace_any(rays, occluded);
+}
+
 }  // namespace glint::rt

@@ -31,6 +31,7 @@ public:
   // ignored) and the chosen instances' transforms, then updates the inner backend.
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) override;
   void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const override;
+  void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const override;
   RayTracerStats stats() const override { return inner_->stats(); }
   std::string_view name() const override { return inner_->name(); }
 

@@ -1,8 +1,9 @@
 #pragma once
 // The RayTracer interface: what the hybrid renderer calls with the rays of the pixels where
 // screen-space reflections failed. Every backend (cpu: glint's own two-level BVH; embree: Embree 3
-// instancing) answers the same closest-hit query with the same hit convention, so the shading pass
-// and the image are independent of the backend, and backends can be compared ray by ray.
+// instancing; cuda; optix) answers the same closest-hit query with the same hit convention, so the
+// shading pass and the image are independent of the backend, and backends can be compared ray by ray;
+// and the same occlusion (any-hit) query, for shadow rays.
 //
 // Hit convention (all backends): hit.instance is the index in Scene::instances, hit.prim the
 // triangle's index within that instance's mesh (Scene::meshes[instances[instance].mesh], triangle
@@ -91,6 +92,12 @@ public:
   // glint::Error before build() or when the spans differ in size.
   virtual void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const = 0;
 
+  // The occlusion query (shadow rays): occluded[i] = 1 when rays[i] hits any triangle with t in
+  // [t_min, t_max] (inclusive, as trace_closest), else 0. The traversal stops at the first hit it
+  // finds, so which triangle is not known; occluded[i] == 1 exactly when trace_closest would find a
+  // hit. TBB-parallel on CPU backends. Same glint::Error rules as trace_closest.
+  virtual void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const = 0;
+
   virtual RayTracerStats stats() const = 0;
   virtual std::string_view name() const = 0;
 
@@ -113,7 +120,14 @@ public:
   // `capacity` rays are traced. Same hit convention as RayTracer::trace_closest.
   virtual void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
                                     uint32_t capacity) = 0;
-  // GPU time of the last trace_closest_device in milliseconds (CUDA events; waits for it to end).
+  // The occlusion query of RayTracer::trace_any on device memory: occluded[i] = 1 when rays[i] hits
+  // any triangle within [t_min, t_max], else 0, for i < *ray_count (read on the GPU, at most
+  // `capacity`), one uint32_t per ray so a GLSL shader reads it as a `uint` array through a shared
+  // GL buffer. Slots at or past the count are not written. Enqueued like trace_closest_device.
+  virtual void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                uint32_t capacity) = 0;
+  // GPU time of the last trace_closest_device or trace_any_device in milliseconds (CUDA events;
+  // waits for it to end).
   virtual double last_trace_ms() = 0;
 
   // Object-space positions of mesh `mesh` in device memory (vertex_count vec3, the backend's own

@@ -10,6 +10,7 @@
 #include "accel/tlas.h"
 #include "accel/wide_bvh.h"
 
+#include <cstdint>
 #include <span>
 
 namespace glint::rt {
@@ -20,5 +21,13 @@ namespace glint::rt {
 void trace_closest_wide(const accel::Tlas& tlas, std::span<const accel::Blas> blases,
                         std::span<const accel::WideBvh8* const> wide, std::span<const accel::Ray> rays,
                         std::span<accel::Hit> hits);
+
+// The occlusion query over the same structures: occluded[i] = 1 when rays[i] hits any triangle within
+// [t_min, t_max], else 0. The same TLAS walk in any-hit mode (accel::traverse_bvh<true>): each
+// instance's BLAS is entered with the 8-wide any-hit kernel (or the binary any-hit traversal) and the
+// walk ends at the first hit. Same errors as trace_closest_wide.
+void trace_any_wide(const accel::Tlas& tlas, std::span<const accel::Blas> blases,
+                    std::span<const accel::WideBvh8* const> wide, std::span<const accel::Ray> rays,
+                    std::span<uint8_t> occluded);
 
 }  // namespace glint::rt
