@@ -12,8 +12,11 @@
 namespace glint {
 namespace {
 
+constexpr unsigned char kStartOfFrameBaseline = 0xC0;
+constexpr unsigned char kStartOfFrameExtended = 0xC1;
 constexpr unsigned char kStartOfFrameProgressive = 0xC2;
 constexpr unsigned char kDefineHuffmanTables = 0xC4;
+constexpr unsigned char kDefineQuantizationTables = 0xDB;
 constexpr unsigned char kStartOfScan = 0xDA;
 constexpr unsigned char kEndOfImage = 0xD9;
 
@@ -62,12 +65,71 @@ void skip_entropy_coded_data(ByteCursor& cursor) {
   }
 }
 
-// Which Huffman tables (DC slots 0-3, AC slots 0-3) a DHT segment has defined so far, and whether the
-// frame is progressive: what decides the tables a scan decodes with.
+// Which Huffman tables (DC slots 0-3, AC slots 0-3) and quantisation tables (slots 0-3) a DHT or DQT
+// segment has defined so far, and the frame's components (id, quantisation slot) and whether it is
+// progressive: what decides the tables a scan decodes and dequantises with.
+struct FrameComponent {
+  unsigned char id = 0;
+  unsigned char quantization_slot = 0;
+};
 struct JpegState {
   std::array<std::array<bool, 4>, 2> defined{};  // [0 DC, 1 AC][slot]
+  std::array<bool, 4> quantization_defined{};
+  std::array<FrameComponent, 4> components{};
+  unsigned component_count = 0;
   bool progressive = false;
 };
+
+// A DQT segment, read like stbi__process_marker reads it: tables of 64 entries, each a precision/slot
+// byte then 8-bit (precision 0) or 16-bit (precision 1) entries. stb_image reads 8-bit samples only,
+// and a JPEG of 8-bit samples may only hold 8-bit tables (ITU T.81, B.2.4.1): a 16-bit one is refused,
+// because stb_image 2.27 multiplies each block's DC value by its entry in an int without an overflow
+// check, and entries up to 65535 make that overflow with a single block.
+void read_quantization_segment(ByteCursor& cursor, std::size_t segment_start, JpegState& state) {
+  int remaining = cursor.next16() - 2;
+  while (remaining > 0) {
+    const unsigned char slot = cursor.next();
+    const unsigned precision = slot >> 4, table_slot = slot & 15u;
+    if (precision > 1 || table_slot > 3) return;  // stb_image rejects the file here
+    if (precision == 1)
+      fail("the JPEG's quantisation table segment at byte {} holds a 16-bit table (an 8-bit JPEG may only hold "
+           "8-bit ones)",
+           segment_start);
+    state.quantization_defined[table_slot] = true;
+    cursor.skip(64);
+    remaining -= 65;
+  }
+}
+
+// A frame header (SOF0-2): precision, height, width, then each component's id, sampling and
+// quantisation slot.
+void read_frame_header(ByteCursor& cursor, JpegState& state) {
+  cursor.next16();  // length
+  cursor.next();    // sample precision
+  cursor.next16();  // height
+  cursor.next16();  // width
+  const unsigned count = cursor.next();
+  state.component_count = std::min(count, 4u);
+  for (unsigned i = 0; i < count; ++i) {
+    const unsigned char id = cursor.next();
+    cursor.next();  // sampling factors
+    const unsigned char slot = cursor.next();
+    if (i < state.components.size()) state.components[i] = {id, slot};
+  }
+}
+
+// The quantisation table of the frame component `id` must be defined when stb_image dequantises with
+// it: otherwise it reads the table from uninitialised memory (an undefined value, and an int
+// overflow in stbi__jpeg_decode_block for large ones).
+void check_quantization_table(unsigned char id, std::size_t segment_start, const JpegState& state) {
+  for (unsigned i = 0; i < state.component_count; ++i) {
+    const FrameComponent& component = state.components[i];
+    if (component.id != id) continue;
+    if (component.quantization_slot <= 3 && !state.quantization_defined[component.quantization_slot])
+      fail("the JPEG's scan at byte {} dequantises with a quantisation table that no DQT segment defines",
+           segment_start);
+  }
+}
 
 // A DHT segment, read like stbi__process_marker reads it: tables follow each other while the segment
 // length is not used up, each a class/slot byte, 16 code counts and the codes' values.
@@ -94,11 +156,14 @@ void read_huffman_segment(ByteCursor& cursor, std::size_t segment_start, JpegSta
 void check_scan_tables(ByteCursor& cursor, std::size_t segment_start, const JpegState& state) {
   const int length = cursor.next16();
   const unsigned components = cursor.next();
-  std::array<unsigned char, 4> tables{};
+  std::array<unsigned char, 4> tables{}, ids{};
   for (unsigned i = 0; i < components; ++i) {
-    cursor.next();  // component id
+    const unsigned char id = cursor.next();
     const unsigned char table = cursor.next();
-    if (i < tables.size()) tables[i] = table;
+    if (i < tables.size()) {
+      tables[i] = table;
+      ids[i] = id;
+    }
   }
   const unsigned spectral_start = cursor.next();
   cursor.next();  // spectral end
@@ -111,6 +176,9 @@ void check_scan_tables(ByteCursor& cursor, std::size_t segment_start, const Jpeg
     if (dc > 3 || ac > 3) return;  // stb_image rejects it
     if ((uses_dc && !state.defined[0][dc]) || (uses_ac && !state.defined[1][ac]))
       fail("the JPEG's scan at byte {} decodes with a Huffman table that no DHT segment defines", segment_start);
+    // A baseline scan dequantises its blocks as it decodes them; a progressive JPEG dequantises every
+    // component once all scans are read (checked at the end, check_jpeg).
+    if (!state.progressive) check_quantization_table(ids[i], segment_start, state);
   }
 }
 
@@ -124,18 +192,32 @@ void check_jpeg(std::span<const unsigned char> jpeg) {
   while (start == 0xFF && !cursor.at_end()) start = cursor.next();
   if (start != 0xD8) return;  // not a JPEG: stb_image's JPEG reader declines it
   JpegState state;
+  // A progressive JPEG's components are dequantised after its last scan, with the tables defined by then.
+  const auto check_progressive_end = [&](std::size_t end) {
+    if (!state.progressive) return;
+    for (unsigned i = 0; i < state.component_count; ++i) check_quantization_table(state.components[i].id, end, state);
+  };
+  bool scanned = false;
   while (!cursor.at_end()) {
     const std::size_t marker_start = cursor.position();
     const unsigned char marker = next_marker(cursor);
-    if (marker == 0 || marker == kEndOfImage) return;
+    if (marker == 0 || marker == kEndOfImage) {
+      if (scanned) check_progressive_end(marker_start);
+      return;
+    }
     if (marker >= 0xD0 && marker <= 0xD7) continue;  // a restart marker outside a scan has no length
     if (marker == kDefineHuffmanTables) {
       read_huffman_segment(cursor, marker_start, state);
       continue;
     }
+    if (marker == kDefineQuantizationTables) {
+      read_quantization_segment(cursor, marker_start, state);
+      continue;
+    }
     if (marker == kStartOfScan) {
       ByteCursor scan_header = cursor;
       check_scan_tables(scan_header, marker_start, state);
+      scanned = true;
       const int length = cursor.next16();
       if (length < 2) return;
       cursor.skip(static_cast<std::size_t>(length - 2));
@@ -143,12 +225,17 @@ void check_jpeg(std::span<const unsigned char> jpeg) {
       continue;
     }
     if (marker == kStartOfFrameProgressive) state.progressive = true;
-    // Every other segment (frame header, quantisation tables, application data) is as long as its
-    // length field says; stb_image rejects those it cannot read that far.
+    if (marker == kStartOfFrameBaseline || marker == kStartOfFrameExtended || marker == kStartOfFrameProgressive) {
+      ByteCursor frame_header = cursor;
+      read_frame_header(frame_header, state);
+    }
+    // Every other segment (frame header, application data) is as long as its length field says;
+    // stb_image rejects those it cannot read that far.
     const int length = cursor.next16();
     if (length < 2) return;
     cursor.skip(static_cast<std::size_t>(length - 2));
   }
+  if (scanned) check_progressive_end(cursor.position());
 }
 
 // A binary PNM's header (P5 or P6, then width, height and maximum value, separated by whitespace and

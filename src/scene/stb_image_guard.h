@@ -7,6 +7,9 @@
 //    heap buffer overflow);
 //  - a JPEG scan that decodes with a Huffman table no DHT segment defined: stb_image reads the table
 //    from uninitialised memory and indexes its arrays with what it finds (reads far out of bounds);
+//  - a JPEG scan that dequantises with a quantisation table no DQT segment defined (uninitialised
+//    memory again: a signed int overflow in stbi__jpeg_decode_block for large values), or a 16-bit
+//    quantisation table, which an 8-bit JPEG may not hold and whose entries overflow that product;
 //  - a binary PNM (P5/P6) whose header numbers do not fit in an int: stb_image's parser overflows a
 //    signed int (undefined behaviour);
 //  - a PNG whose first image data chunk (IDAT) is empty: stb_image copies zero bytes to a null

@@ -81,6 +81,20 @@ TEST(StbImageGuard, TablesBetweenScansAndAfterFillBytesAreChecked) {
   EXPECT_THROW(check_before_stb_image(concat({Bytes{0xFF}, kStart, huffman_segment(k272Codes)})), Error);
 }
 
+// An 8-bit DQT segment defining quantisation table `slot` (all entries 1).
+Bytes quantization_table(unsigned char slot, unsigned char precision = 0) {
+  const std::size_t entries = precision ? 128 : 64;
+  Bytes segment(5 + entries, 1);
+  const std::size_t length = 3 + entries;
+  segment[0] = 0xFF;
+  segment[1] = 0xDB;
+  segment[2] = static_cast<unsigned char>(length >> 8);
+  segment[3] = static_cast<unsigned char>(length & 0xFF);
+  segment[4] = static_cast<unsigned char>(precision << 4 | slot);
+  return segment;
+}
+const Bytes kQuantization0 = quantization_table(0);
+
 const Bytes kBaselineFrame{0xFF, 0xC0, 0x00, 0x0B, 0x08, 0x00, 0x08, 0x00, 0x08, 0x01, 0x01, 0x11, 0x00};
 const Bytes kProgressiveFrame{0xFF, 0xC2, 0x00, 0x0B, 0x08, 0x00, 0x08, 0x00, 0x08, 0x01, 0x01, 0x11, 0x00};
 
@@ -99,18 +113,36 @@ Bytes table(unsigned char table_class, unsigned char slot) {
 TEST(StbImageGuard, AScanThatDecodesWithAnUndefinedHuffmanTableIsAnError) {
   const Bytes data{0x12, 0x34};
   // Baseline: both tables of the scan must be defined.
-  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kBaselineFrame, table(0, 0), table(1, 0), scan(0, 0, 0, 63), data, kEnd})));
+  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kQuantization0, kBaselineFrame, table(0, 0), table(1, 0), scan(0, 0, 0, 63), data, kEnd})));
   const std::string message = testing::error_of(
-      [&] { check_before_stb_image(concat({kStart, kBaselineFrame, table(0, 0), scan(0, 0, 0, 63), data, kEnd})); });
+      [&] { check_before_stb_image(concat({kStart, kQuantization0, kBaselineFrame, table(0, 0), scan(0, 0, 0, 63), data, kEnd})); });
   EXPECT_NE(message.find("no DHT segment defines"), std::string::npos) << message;
-  EXPECT_THROW(check_before_stb_image(concat({kStart, kBaselineFrame, table(0, 0), table(1, 0), scan(0, 1, 0, 63), data})), Error);
+  EXPECT_THROW(check_before_stb_image(concat({kStart, kQuantization0, kBaselineFrame, table(0, 0), table(1, 0), scan(0, 1, 0, 63), data})), Error);
   // Progressive: a first DC scan needs only the DC table, a DC refinement none, an AC scan only the AC
   // table, and a table defined between scans counts for the scans after it.
-  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kProgressiveFrame, table(0, 2), scan(2, 3, 0, 0), data,
+  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kQuantization0, kProgressiveFrame, table(0, 2), scan(2, 3, 0, 0), data,
                                                  scan(3, 3, 0, 0, 0x10), data, table(1, 1), scan(0, 1, 1, 5), data, kEnd})));
-  EXPECT_THROW(check_before_stb_image(concat({kStart, kProgressiveFrame, table(0, 2), scan(2, 3, 0, 0), data,
+  EXPECT_THROW(check_before_stb_image(concat({kStart, kQuantization0, kProgressiveFrame, table(0, 2), scan(2, 3, 0, 0), data,
                                               scan(0, 1, 1, 5), data, table(1, 1), kEnd})),
                Error);
+}
+
+TEST(StbImageGuard, AScanThatDequantisesWithAnUndefinedOrSixteenBitTableIsAnError) {
+  const Bytes data{0x12, 0x34};
+  const Bytes huffman = concat({table(0, 0), table(1, 0)});
+  const auto error_for = [&](const Bytes& jpeg) { return testing::error_of([&] { check_before_stb_image(jpeg); }); };
+  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kQuantization0, kBaselineFrame, huffman, scan(0, 0, 0, 63), data, kEnd})));
+  // Baseline: the frame's component uses table 0; only table 1 is defined, or none.
+  std::string message = error_for(concat({kStart, quantization_table(1), kBaselineFrame, huffman, scan(0, 0, 0, 63), data, kEnd}));
+  EXPECT_NE(message.find("no DQT segment defines"), std::string::npos) << message;
+  EXPECT_NE(error_for(concat({kStart, kBaselineFrame, huffman, scan(0, 0, 0, 63), data})).find("no DQT"), std::string::npos);
+  // Progressive: the table may come between scans, but must exist once the last scan is read.
+  EXPECT_NO_THROW(check_before_stb_image(concat({kStart, kProgressiveFrame, table(0, 0), scan(0, 0, 0, 0), data, kQuantization0, kEnd})));
+  message = error_for(concat({kStart, kProgressiveFrame, table(0, 0), scan(0, 0, 0, 0), data, quantization_table(2), kEnd}));
+  EXPECT_NE(message.find("no DQT segment defines"), std::string::npos) << message;
+  // A 16-bit table, in any JPEG stb_image reads (8-bit samples only).
+  message = error_for(concat({kStart, quantization_table(0, 1), kBaselineFrame, huffman, scan(0, 0, 0, 63), data, kEnd}));
+  EXPECT_NE(message.find("16-bit table"), std::string::npos) << message;
 }
 
 TEST(StbImageGuard, APnmHeaderNumberBeyondAnIntIsAnError) {
