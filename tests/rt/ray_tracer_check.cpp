@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <utility>
 
 namespace glint::testing {
 namespace {
@@ -172,6 +173,142 @@ std::vector<accel::Hit> trace(const rt::RayTracer& tracer, std::span<const accel
   std::vector<accel::Hit> hits(rays.size());
   tracer.trace_closest(rays, hits);
   return hits;
+}
+
+std::vector<uint8_t> brute_force_occluded(const Scene& scene, std::span<const accel::Ray> rays) {
+  const rt::SceneGeometry geometry = rt::flatten_scene(scene);
+  const accel::TriangleMesh mesh = geometry.mesh();
+  std::vector<uint8_t> occluded(rays.size(), 0);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const accel::WatertightRay watertight = accel::make_watertight_ray(rays[i].origin, rays[i].direction);
+    for (uint32_t t = 0; t < mesh.triangle_count && occluded[i] == 0; ++t) {
+      accel::TriangleHit hit{};
+      if (accel::intersect_triangle(watertight, mesh.triangle(t), rays[i].t_min, rays[i].t_max, hit)) occluded[i] = 1;
+    }
+  }
+  return occluded;
+}
+
+std::vector<uint8_t> trace_occluded(const rt::RayTracer& tracer, std::span<const accel::Ray> rays) {
+  // Filled with a value trace_any never writes, so a ray it skipped shows up as a difference.
+  std::vector<uint8_t> occluded(rays.size(), 0xAB);
+  tracer.trace_any(rays, occluded);
+  return occluded;
+}
+
+std::vector<uint8_t> hit_exists(std::span<const accel::Hit> hits) {
+  std::vector<uint8_t> exists(hits.size());
+  for (size_t i = 0; i < hits.size(); ++i) exists[i] = hits[i].valid() ? 1 : 0;
+  return exists;
+}
+
+std::string compare_occluded(std::span<const accel::Ray> rays, std::span<const uint8_t> expected,
+                             std::span<const uint8_t> actual) {
+  if (expected.size() != rays.size() || actual.size() != rays.size()) return "size mismatch";
+  std::string report;
+  size_t differences = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    if (expected[i] == actual[i]) continue;
+    if (++differences <= 5) {
+      const accel::Ray& ray = rays[i];
+      report += fmt::format("ray {}: expected {}, got {} (origin {} {} {}, direction {} {} {}, t [{}, {}])\n", i,
+                            expected[i], actual[i], ray.origin.x, ray.origin.y, ray.origin.z, ray.direction.x,
+                            ray.direction.y, ray.direction.z, ray.t_min, ray.t_max);
+    }
+  }
+  if (differences > 0) report += fmt::format("{} of {} rays differ", differences, rays.size());
+  return report;
+}
+
+std::vector<accel::Ray> hit_interval_probe_rays(std::span<const accel::Ray> rays, std::span<const accel::Hit> hits) {
+  std::vector<accel::Ray> probes;
+  for (size_t i = 0; i < rays.size() && i < hits.size(); ++i) {
+    if (!hits[i].valid() || !(hits[i].t > 0.0f)) continue;
+    const float t = hits[i].t;
+    accel::Ray before = rays[i];
+    before.t_max = t * (1.0f - 1e-3f);
+    accel::Ray after = rays[i];
+    after.t_max = t * (1.0f + 1e-3f);
+    accel::Ray past = rays[i];
+    past.t_min = t * (1.0f + 1e-3f);
+    if (before.t_max >= before.t_min) probes.push_back(before);
+    probes.push_back(after);
+    if (past.t_min <= past.t_max) probes.push_back(past);
+  }
+  return probes;
+}
+
+std::vector<accel::Ray> edge_and_vertex_rays(const Scene& scene, size_t max_per_kind, uint32_t seed) {
+  const rt::SceneGeometry geometry = rt::flatten_scene(scene);
+  // Per edge ((lower, higher) world vertex index) and per vertex: the unit normals of the triangles
+  // around it (the meshes are consistently oriented, so a ray crossing all of them on the same side
+  // passes through the surface there).
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<vec3>> edge_normals;
+  std::vector<std::vector<vec3>> vertex_normals(geometry.positions.size());
+  for (uint32_t t = 0; t < geometry.triangle_count(); ++t) {
+    const uint32_t* corner = &geometry.indices[3 * static_cast<size_t>(t)];
+    const vec3 n = glm::cross(geometry.positions[corner[1]] - geometry.positions[corner[0]],
+                              geometry.positions[corner[2]] - geometry.positions[corner[0]]);
+    if (!(glm::length(n) > 0.0f)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = corner[k], b = corner[(k + 1) % 3];
+      edge_normals[{std::min(a, b), std::max(a, b)}].push_back(glm::normalize(n));
+      vertex_normals[a].push_back(glm::normalize(n));
+    }
+  }
+  // Interior edges are shared by exactly two triangles; interior vertices have only interior edges.
+  std::vector<int> vertex_state(geometry.positions.size(), 0);  // 0 unused, 1 interior, -1 on a border
+  std::vector<std::pair<vec3, const std::vector<vec3>*>> edge_targets, vertex_targets;
+  for (const auto& [edge, normals] : edge_normals) {
+    const bool interior = normals.size() == 2;
+    for (uint32_t v : {edge.first, edge.second}) {
+      if (!interior) vertex_state[v] = -1;
+      else if (vertex_state[v] == 0) vertex_state[v] = 1;
+    }
+    if (interior) edge_targets.push_back({0.5f * (geometry.positions[edge.first] + geometry.positions[edge.second]), &normals});
+  }
+  for (size_t v = 0; v < vertex_state.size(); ++v)
+    if (vertex_state[v] == 1) vertex_targets.push_back({geometry.positions[v], &vertex_normals[v]});
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::normal_distribution<float> gauss(0.0f, 1.0f);
+  std::vector<accel::Ray> rays;
+  for (auto* kind : {&edge_targets, &vertex_targets}) {
+    std::shuffle(kind->begin(), kind->end(), rng);
+    size_t taken = 0;
+    for (const auto& [point, normals] : *kind) {
+      if (taken == max_per_kind) break;
+      // A direction off the surface on the same side of every triangle around the target, at least
+      // 0.3 from grazing any of them; targets where none is found quickly are skipped.
+      for (int attempt = 0; attempt < 64; ++attempt) {
+        const vec3 d(gauss(rng), gauss(rng), gauss(rng));
+        if (glm::length(d) < 1e-3f) continue;
+        const vec3 away = glm::normalize(d);
+        bool front = true, back = true;
+        for (const vec3& n : *normals) {
+          front = front && glm::dot(away, n) >= 0.3f;
+          back = back && glm::dot(away, n) <= -0.3f;
+        }
+        if (!front && !back) continue;
+        accel::Ray ray;
+        ray.origin = point + (0.5f + 2.5f * unit(rng)) * away;
+        ray.direction = point - ray.origin;  // reaches the target at t = 1
+        rays.push_back(ray);
+        ++taken;
+        break;
+      }
+    }
+  }
+  return rays;
+}
+
+std::vector<accel::Ray> occlusion_test_rays(const Scene& scene, size_t random_count, uint32_t seed) {
+  std::vector<accel::Ray> rays = random_rays(scene, random_count, seed);
+  const std::vector<accel::Ray> edges = edge_and_vertex_rays(scene, random_count / 4, seed + 1);
+  rays.insert(rays.end(), edges.begin(), edges.end());
+  const std::vector<accel::Ray> probes = hit_interval_probe_rays(rays, brute_force_hits(scene, rays));
+  rays.insert(rays.end(), probes.begin(), probes.end());
+  return rays;
 }
 
 }  // namespace glint::testing

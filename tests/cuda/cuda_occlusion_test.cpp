@@ -1,0 +1,178 @@
+// The cuda backend's occlusion query (trace_any, trace_any_device) against a brute-force any-hit over
+// the world triangles and against its own closest hits, for every builder and both trace kernels,
+// after deformation with every policy, and through the device path with the ray count read on the
+// GPU. Needs a CUDA GPU; skipped elsewhere.
+#include "cuda/device_query.h"
+#include "rt/ray_tracer.h"
+#include "rt/ray_tracer_check.h"
+#include "rt/reflection_rays.h"
+#include "scene/sine_deformer.h"
+#include "support/error_of.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#if GLINT_HAVE_CUDA
+#include <cuda_runtime.h>
+#endif
+
+namespace glint::rt {
+namespace {
+
+using testing::brute_force_occluded;
+using testing::compare_occluded;
+using testing::hit_exists;
+using testing::occlusion_test_rays;
+using testing::trace;
+using testing::trace_occluded;
+
+constexpr cuda::TraceKernel kKernels[] = {cuda::TraceKernel::one_ray_per_thread, cuda::TraceKernel::persistent};
+
+AccelOptions cuda_options(accel::BvhBuilder builder, cuda::TraceKernel kernel = cuda::kDefaultTraceKernel) {
+  AccelOptions options;
+  options.builder = builder;
+  options.cuda_trace_kernel = kernel;
+  return options;
+}
+
+TEST(CudaRayTracerOcclusion, EveryBuilderAndKernelEqualsBruteForce) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const Scene scene = testing::make_instanced_scene();
+  const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 3000, 7);
+  const std::vector<uint8_t> expected = brute_force_occluded(scene, rays);
+  for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
+    for (cuda::TraceKernel kernel : kKernels) {
+      const auto tracer = make_ray_tracer("cuda");
+      tracer->build(scene, cuda_options(builder, kernel));
+      const std::vector<uint8_t> occluded = trace_occluded(*tracer, rays);
+      const std::string label = std::string(accel::builder_name(builder)) + " " + std::string(cuda::trace_kernel_name(kernel));
+      EXPECT_EQ(compare_occluded(rays, expected, occluded), "") << label;
+      EXPECT_EQ(compare_occluded(rays, hit_exists(trace(*tracer, rays)), occluded), "") << label << " vs closest";
+    }
+  }
+}
+
+// Watertightness on the GPU: rays aimed exactly at shared edges and vertices are all occluded; and
+// reflection rays agree with the closest hits (the renderer's rays, 100k).
+TEST(CudaRayTracerOcclusion, EdgeRaysAreOccludedAndReflectionRaysAgreeWithClosestHits) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const Scene scene = testing::make_reduced_atrium();
+  const std::vector<accel::Ray> edges = testing::edge_and_vertex_rays(scene, 5000, 5);
+  std::vector<accel::Ray> reflections = testing::reflection_like_rays(scene, 100000, 21);
+  for (size_t i = 0; i < reflections.size(); i += 3) reflections[i].t_max = 2.0f;
+  for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah}) {
+    const auto tracer = make_ray_tracer("cuda");
+    tracer->build(scene, cuda_options(builder));
+    EXPECT_EQ(compare_occluded(edges, std::vector<uint8_t>(edges.size(), 1), trace_occluded(*tracer, edges)), "")
+        << accel::builder_name(builder);
+    EXPECT_EQ(compare_occluded(reflections, hit_exists(trace(*tracer, reflections)), trace_occluded(*tracer, reflections)),
+              "")
+        << accel::builder_name(builder);
+  }
+}
+
+TEST(CudaRayTracerOcclusion, FollowsDeformationWithEveryPolicy) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah}) {
+    for (UpdatePolicy policy : kAllUpdatePolicies) {
+      Scene scene = testing::make_instanced_scene();
+      const auto tracer = make_ray_tracer("cuda");
+      tracer->build(scene, cuda_options(builder));
+      const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 1500, 5);
+      const std::vector<uint8_t> rest = brute_force_occluded(scene, rays);
+      SceneDeformers deformers(scene);
+      for (int frame : {17, 40, 41}) {
+        tracer->update(scene, deformers.apply(scene, frame), policy);
+        const std::vector<uint8_t> expected = brute_force_occluded(scene, rays);
+        ASSERT_NE(compare_occluded(rays, rest, expected), "") << "the deformation must change some answers";
+        EXPECT_EQ(compare_occluded(rays, expected, trace_occluded(*tracer, rays)), "")
+            << accel::builder_name(builder) << " " << update_policy_name(policy) << " frame " << frame;
+      }
+    }
+  }
+}
+
+TEST(CudaRayTracerOcclusion, MisuseIsAClearError) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const Scene scene = testing::make_instanced_scene();
+  const auto tracer = make_ray_tracer("cuda");
+  const std::vector<accel::Ray> rays(3);
+  std::vector<uint8_t> occluded(3);
+  EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, occluded); }).find("trace_any() before build()"),
+            std::string::npos);
+  EXPECT_NE(testing::error_of([&] { tracer->device_tracing()->trace_any_device(nullptr, nullptr, nullptr, 0); })
+                .find("trace_any_device() before build()"),
+            std::string::npos);
+  tracer->build(scene, {});
+  std::vector<uint8_t> too_few(2);
+  EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, too_few); }).find("3 rays but 2 occlusion results"),
+            std::string::npos);
+  tracer->trace_any({}, {});  // nothing to trace is fine
+}
+
+#if GLINT_HAVE_CUDA
+template <typename T>
+T* device_copy(const std::vector<T>& host) {
+  T* device = nullptr;
+  EXPECT_EQ(cudaMalloc(reinterpret_cast<void**>(&device), host.size() * sizeof(T)), cudaSuccess);
+  EXPECT_EQ(cudaMemcpy(device, host.data(), host.size() * sizeof(T), cudaMemcpyHostToDevice), cudaSuccess);
+  return device;
+}
+
+template <typename T>
+std::vector<T> host_copy(const T* device, size_t count) {
+  std::vector<T> host(count);
+  EXPECT_EQ(cudaMemcpy(host.data(), device, count * sizeof(T), cudaMemcpyDeviceToHost), cudaSuccess);
+  return host;
+}
+
+// The renderer's shadow path: rays and one uint32 per ray in device memory, the ray count read on the
+// GPU; only that many slots are written (the rest keep their sentinel), with both trace kernels, and
+// a closest-hit launch in between does not disturb either.
+TEST(CudaRayTracerOcclusion, DeviceQueryReadsTheRayCountOnTheGpu) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const Scene scene = testing::make_instanced_scene();
+  const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 2000, 13);
+  const auto traced = static_cast<uint32_t>(rays.size() / 2 + 7);
+  const std::span<const accel::Ray> traced_rays(rays.data(), traced);
+  const std::vector<uint8_t> expected = brute_force_occluded(scene, traced_rays);
+  constexpr uint32_t kSentinel = 0xDEADBEEFu;
+  accel::Ray* device_rays = device_copy(rays);
+  uint32_t* device_occluded = device_copy(std::vector<uint32_t>(rays.size(), kSentinel));
+  accel::Hit* device_hits = device_copy(std::vector<accel::Hit>(rays.size()));
+  uint32_t* device_count = device_copy(std::vector<uint32_t>{traced});
+  for (cuda::TraceKernel kernel : kKernels) {
+    const auto tracer = make_ray_tracer("cuda");
+    tracer->build(scene, cuda_options(accel::BvhBuilder::sah, kernel));
+    DeviceTracing* device = tracer->device_tracing();
+    ASSERT_EQ(cudaMemcpy(device_occluded, std::vector<uint32_t>(rays.size(), kSentinel).data(),
+                         rays.size() * sizeof(uint32_t), cudaMemcpyHostToDevice),
+              cudaSuccess);
+    device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
+    device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
+    device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
+    EXPECT_GE(device->last_trace_ms(), 0.0);  // waits for the last launch
+    const std::vector<uint32_t> occluded = host_copy(device_occluded, rays.size());
+    const std::vector<accel::Hit> hits = host_copy(device_hits, traced);
+    std::vector<uint8_t> traced_occluded(traced);
+    for (uint32_t i = 0; i < traced; ++i) {
+      ASSERT_LE(occluded[i], 1u) << "slot " << i;
+      traced_occluded[i] = static_cast<uint8_t>(occluded[i]);
+    }
+    const std::string kernel_name(cuda::trace_kernel_name(kernel));
+    EXPECT_EQ(compare_occluded(traced_rays, expected, traced_occluded), "") << kernel_name;
+    EXPECT_EQ(compare_occluded(traced_rays, hit_exists(hits), traced_occluded), "") << kernel_name << " vs closest";
+    for (size_t i = traced; i < rays.size(); ++i)
+      ASSERT_EQ(occluded[i], kSentinel) << "slot " << i << " past the count (" << kernel_name << ")";
+  }
+  cudaFree(device_rays);
+  cudaFree(device_occluded);
+  cudaFree(device_hits);
+  cudaFree(device_count);
+}
+#endif
+
+}  // namespace
+}  // namespace glint::rt
