@@ -6,8 +6,7 @@
 #include "gl/gpu_memory.h"
 #include "render/gpu_deformation.h"
 
-#include <epoxy/gl.h>
-
+#include <algorithm>
 #include <chrono>
 #include <utility>
 #include <vector>
@@ -27,6 +26,19 @@ std::optional<SceneDeformers> make_deformers(const Scene& scene, const FrameLoop
   return std::optional<SceneDeformers>(std::in_place, scene);
 }
 
+// Whether the GPU passed `fence`; waits for it (a minute at most) when `wait`.
+bool fence_passed(GLsync fence, bool wait, int frame) {
+  const auto give_up = Clock::now() + std::chrono::minutes(1);
+  while (true) {
+    // The flush bit makes sure the fence reaches the GPU; a timeout of 0 only asks.
+    const GLenum status = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, wait ? 100'000'000 : 0);
+    if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) return true;
+    if (status == GL_WAIT_FAILED) fail("frame {}: waiting for the GPU failed (glClientWaitSync)", frame);
+    if (!wait) return false;
+    if (Clock::now() > give_up) fail("frame {}: the GPU did not finish the frame within a minute", frame);
+  }
+}
+
 }  // namespace
 
 FrameLoop::FrameLoop(Scene& scene, const render::FramePipelineSettings& settings, const FrameLoopOptions& options,
@@ -35,14 +47,20 @@ FrameLoop::FrameLoop(Scene& scene, const render::FramePipelineSettings& settings
       animation_(scene),
       deformers_(make_deformers(scene, options)),
       pipeline_(scene, options.width, options.height, settings),
-      timer_(pass_timing) {
+      timer_(pass_timing),
+      serialized_(options.serialized),
+      keep_in_flight_(std::min(options.keep_in_flight, kFramesInFlight - 1)) {
   if (deformers_ && options.deform_on_gpu) gpu_deformer_ = render::make_gpu_deformer(*deformers_, pipeline_);
+  pipeline_.set_final_capture(options.capture_final);
 }
 
-FrameLoop::~FrameLoop() = default;
+FrameLoop::~FrameLoop() {
+  for (InFlight& frame : in_flight_)
+    if (frame.done != nullptr) glDeleteSync(frame.done);
+}
 
 // On the CPU the new vertices are copied to GL and the tracer; with a GPU deformer nothing is copied
-// and the kernels' time is read after the frame (last_apply_ms).
+// and the kernels' time is read later (read_cuda_times).
 FrameLoop::DeformTimes FrameLoop::deform(int frame) {
   if (!deformers_) return {};
   DeformTimes times;
@@ -59,31 +77,84 @@ FrameLoop::DeformTimes FrameLoop::deform(int frame) {
   return times;
 }
 
-FrameMeasurement FrameLoop::run(int frame) {
-  const auto frame_start = Clock::now();
-  DeformTimes deform_times = deform(frame);
-  timer_.begin_frame();
-  pipeline_.render(animation_.at(frame), &timer_);
-  timer_.end_frame();
-  glFinish();  // the CPU frame time includes the GPU finishing the frame
-  const double cpu_frame_ms = milliseconds_since(frame_start);
-  if (gpu_deformer_) deform_times.deform_ms = gpu_deformer_->last_apply_ms();
+void FrameLoop::read_cuda_times(InFlight& frame) {
+  frame.cuda_times_pending = false;
+  // The deformer and the tracer keep one pair of CUDA events each; waiting on them waits for this
+  // frame's first GPU work only, long done or next in line.
+  if (gpu_deformer_) frame.deform.deform_ms = gpu_deformer_->last_apply_ms();
   // A GPU backend's update only enqueues work: report its GPU time instead.
   if (rt::DeviceTracing* device = pipeline_.device_tracing(); device && deformers_)
-    if (const std::optional<double> update_ms = device->last_update_ms()) deform_times.accel_update_ms = *update_ms;
+    if (const std::optional<double> update_ms = device->last_update_ms()) frame.deform.accel_update_ms = *update_ms;
+}
 
-  timer_.wait_for_all();
-  std::vector<FrameTimes> completed = timer_.take_completed();
-  if (completed.size() != 1) fail("frame {}: the pass timer returned {} frames' timings, expected 1", frame, completed.size());
-  return {frame,
-          std::move(completed.front()),
-          cpu_frame_ms,
-          deform_times.deform_ms,
-          deform_times.accel_update_ms,
-          pipeline_.read_counts(),
-          pipeline_.ray_trace_stats(),
-          resident_memory_bytes(),
-          gpu_memory_used_bytes()};
+std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
+  std::vector<FrameMeasurement> done;
+  // Frames already finished, then (all slots in use) the oldest, however long it takes.
+  while (in_flight_.size() > keep_in_flight_)
+    if (std::optional<FrameMeasurement> finished = complete_oldest(false)) done.push_back(std::move(*finished));
+    else break;
+  if (!in_flight_.empty() && in_flight_.back().cuda_times_pending) read_cuda_times(in_flight_.back());
+  while (in_flight_.size() >= kFramesInFlight) done.push_back(*complete_oldest(true));
+
+  InFlight submitted{frame, submitted_++, {}, false, nullptr};
+  timer_.begin_frame();  // the frame's latency starts here, before the deformation
+  submitted.deform = deform(frame);
+  pipeline_.render(animation_.at(frame), &timer_);
+  timer_.end_frame();
+  submitted.done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  if (submitted.done == nullptr) fail("frame {}: glFenceSync failed", frame);
+  glFlush();  // hand the frame to the GPU now, so it runs while the CPU prepares the next one
+  submitted.cuda_times_pending = deformers_ && (gpu_deformer_ || pipeline_.device_tracing() != nullptr);
+  in_flight_.push_back(submitted);
+
+  if (serialized_) {
+    for (FrameMeasurement& finished : drain()) done.push_back(std::move(finished));
+    return done;
+  }
+  while (in_flight_.size() > keep_in_flight_)
+    if (std::optional<FrameMeasurement> finished = complete_oldest(false)) done.push_back(std::move(*finished));
+    else break;
+  return done;
+}
+
+std::vector<FrameMeasurement> FrameLoop::drain() {
+  std::vector<FrameMeasurement> done;
+  while (!in_flight_.empty()) done.push_back(*complete_oldest(true));
+  return done;
+}
+
+FrameMeasurement FrameLoop::run(int frame) {
+  std::vector<FrameMeasurement> done = submit(frame);
+  for (FrameMeasurement& finished : drain()) done.push_back(std::move(finished));
+  if (done.empty() || done.back().frame != frame) fail("frame {}: the loop did not return it", frame);
+  return std::move(done.back());
+}
+
+std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
+  if (in_flight_.empty()) return std::nullopt;
+  InFlight& oldest = in_flight_.front();
+  if (!fence_passed(oldest.done, wait, oldest.frame)) return std::nullopt;
+  // The GPU finished the frame: its queries and readback copies are there, so nothing below waits
+  // long (the queries' results may still take a moment to be reported).
+  if (oldest.cuda_times_pending) read_cuda_times(oldest);
+  std::optional<FrameTimes> times = timer_.take_frame(oldest.index, /*wait=*/true);
+  std::optional<render::FrameReadback> readback = pipeline_.take_readback(oldest.index, /*wait=*/true);
+  FrameMeasurement measured;
+  measured.frame = oldest.frame;
+  measured.latency_ms = times->latency_ms;
+  measured.frame_ms = last_completed_at_ms_ ? times->completed_at_ms - *last_completed_at_ms_ : times->latency_ms;
+  last_completed_at_ms_ = times->completed_at_ms;
+  measured.times = std::move(*times);
+  measured.deform_ms = oldest.deform.deform_ms;
+  measured.accel_update_ms = oldest.deform.accel_update_ms;
+  measured.ssr_counts = readback->ssr_counts;
+  measured.ray_stats = readback->ray_stats;
+  measured.final_image = std::move(readback->final_image);
+  measured.resident_bytes = resident_memory_bytes();
+  measured.gpu_memory_used_bytes = gpu_memory_used_bytes();
+  glDeleteSync(oldest.done);
+  in_flight_.pop_front();
+  return measured;
 }
 
 }  // namespace glint

@@ -1,12 +1,21 @@
 #pragma once
-// One walkthrough frame as `glint render` and `glint bench` run it: pose the deformable meshes (on
-// the CPU, or on the GPU with a GPU deformer), bring the ray tracer's structures up to date, render
-// every pass, wait for the GPU, and collect what the frame measured. FrameLoop owns what a run sets
-// up once (the deformers, the pipeline, a GPU deformer, the pass timer); the commands decide which
-// frames to run and what to write.
+// The walkthrough frames as `glint render` and `glint bench` run them: pose the deformable meshes
+// (on the CPU, or on the GPU with a GPU deformer), bring the ray tracer's structures up to date,
+// render every pass, and collect what each frame measured. FrameLoop owns what a run sets up once
+// (the deformers, the pipeline, a GPU deformer, the pass timer); the commands decide which frames
+// to run and what to write.
 //
-//   FrameLoop loop(scene, settings, {1280, 720, true, false}, pass_timing_for_renderer(context.renderer()));
-//   for (int frame : frames) record(loop.run(frame));
+// The loop is pipelined: submit(frame) issues a frame and returns without waiting for the GPU;
+// what a frame measured (pass times, counters, CUDA times, its final image) is read kFramesInFlight
+// frames later at most, from rings of queries and readback slots, once a fence says the GPU has
+// finished that frame; only when all slots are in use does submit() wait for the oldest frame.
+// Frames come back complete and in order, each exactly once; drain() returns the rest.
+//
+//   FrameLoop loop(scene, settings, {1280, 720}, pass_timing_for_renderer(context.renderer()));
+//   for (int frame : frames)
+//     for (FrameMeasurement& done : loop.submit(frame)) record(done);
+//   for (FrameMeasurement& done : loop.drain()) record(done);
+#include "core/image.h"
 #include "gl/gpu_timer.h"
 #include "render/frame_pipeline.h"
 #include "render/ray_traced_reflections.h"
@@ -15,9 +24,13 @@
 #include "scene/scene.h"
 #include "scene/sine_deformer.h"
 
+#include <epoxy/gl.h>
+
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace glint {
 
@@ -28,16 +41,21 @@ class GpuSceneDeformer;
 // What one frame measured.
 struct FrameMeasurement {
   int frame = 0;
-  FrameTimes times;                                     // GPU passes
-  double cpu_frame_ms = 0.0;                            // wall clock of the whole frame
+  FrameTimes times;            // GPU passes
+  // Steady state: the time from the previous frame's completion on the GPU to this one's (the frame
+  // rate a run sustains; the first frame of a loop: its latency).
+  double frame_ms = 0.0;
+  // Latency: from the start of this frame's CPU work (deformation first) to the GPU finishing it.
+  double latency_ms = 0.0;
   double deform_ms = 0.0;                               // cpu: deformers + GL vertex upload; gpu: the kernels
   double accel_update_ms = 0.0;                         // the ray tracer's update of deformed meshes
   std::optional<render::SsrCounts> ssr_counts;          // with SSR
   std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
-  // Sampled after the frame, for long-run checks (docs/reliability.md): the process's resident memory
-  // and the GPU's memory in use (NVIDIA drivers only, see gl/gpu_memory.h).
+  // Sampled when the frame's results were read, for long-run checks (docs/reliability.md): the
+  // process's resident memory and the GPU's memory in use (NVIDIA drivers only, gl/gpu_memory.h).
   std::optional<std::uint64_t> resident_bytes;
   std::optional<std::uint64_t> gpu_memory_used_bytes;
+  std::optional<ImageRgba8> final_image;  // with FrameLoopOptions::capture_final
 };
 
 struct FrameLoopOptions {
@@ -45,6 +63,17 @@ struct FrameLoopOptions {
   int height = 720;
   bool deform = true;          // animate the scene's deformable meshes (when it has any)
   bool deform_on_gpu = false;  // with CUDA kernels (needs a CUDA GPU; see render/gpu_deformation.h)
+  // Read every frame's final image back (a pixel-pack buffer per frame in flight, no stall) into
+  // FrameMeasurement::final_image.
+  bool capture_final = false;
+  // Wait for each frame before the next starts (submit() returns exactly the frame it submitted),
+  // as the loop did before it was pipelined: for comparisons, and for reading a frame's other
+  // images (debug views) from the pipeline right after it.
+  bool serialized = false;
+  // submit() returns a frame only once this many later frames were submitted (at most
+  // kFramesInFlight - 1), as when the GPU runs that far behind: tests use it to read every frame's
+  // results frames late on any machine. drain() still returns everything.
+  std::size_t keep_in_flight = 0;
 };
 
 class FrameLoop {
@@ -58,9 +87,16 @@ public:
   FrameLoop(const FrameLoop&) = delete;
   FrameLoop& operator=(const FrameLoop&) = delete;
 
-  // Renders walkthrough frame `frame` (deform, update, render, glFinish) and returns what it
-  // measured. The final image stays in the pipeline (pipeline().read_final()).
+  // Issues walkthrough frame `frame` (deform, update, render) and returns the frames that finished
+  // since the last call, oldest first (serialized: exactly this one). Waits only for the oldest
+  // frame in flight when kFramesInFlight are.
+  std::vector<FrameMeasurement> submit(int frame);
+  // Waits for every frame in flight and returns them, oldest first.
+  std::vector<FrameMeasurement> drain();
+  // submit() and drain(): this frame, complete; its final image stays in the pipeline
+  // (pipeline().read_final()). For warm-up frames, quality images and tests.
   FrameMeasurement run(int frame);
+  std::size_t frames_in_flight() const { return in_flight_.size(); }
 
   render::FramePipeline& pipeline() { return pipeline_; }
   const WalkthroughAnimation& animation() const { return animation_; }
@@ -72,7 +108,19 @@ private:
     double deform_ms = 0.0;
     double accel_update_ms = 0.0;
   };
+  // A frame submitted and not yet returned.
+  struct InFlight {
+    int frame = 0;
+    std::uint64_t index = 0;  // its number in the timer and the pipeline (0, 1, ... per submit)
+    DeformTimes deform;
+    bool cuda_times_pending = false;  // its deform/update GPU times are still in CUDA events
+    GLsync done = nullptr;            // signalled when the GPU finished the frame
+  };
   DeformTimes deform(int frame);
+  // Reads the frame's CUDA event times before the next frame's work overwrites the events.
+  void read_cuda_times(InFlight& frame);
+  // The oldest frame in flight, when it is finished or `wait`; nullopt otherwise.
+  std::optional<FrameMeasurement> complete_oldest(bool wait);
 
   Scene* scene_;
   WalkthroughAnimation animation_;
@@ -80,6 +128,11 @@ private:
   render::FramePipeline pipeline_;
   std::unique_ptr<cuda::GpuSceneDeformer> gpu_deformer_;
   GpuTimer timer_;
+  bool serialized_ = false;
+  std::size_t keep_in_flight_ = 0;
+  std::deque<InFlight> in_flight_;
+  std::uint64_t submitted_ = 0;
+  std::optional<double> last_completed_at_ms_;  // the previous frame's completion (timer's clock)
 };
 
 }  // namespace glint

@@ -4,6 +4,7 @@
 #include "app/frame_selection.h"
 #include "app/info_command.h"
 #include "app/output_folder.h"
+#include "app/png_writer_thread.h"
 #include "app/render_run_record.h"
 #include "app/video_writer.h"
 #include "core/csv_writer.h"
@@ -311,8 +312,12 @@ int run_render_command(const RenderOptions& options) {
 
   const OutputFolder out(options.out, options.overwrite ? EarlierRun::replace : EarlierRun::refuse);
   HeadlessGlContext context;  // logs its renderer with --verbose
-  FrameLoop loop(scene, settings, {options.width, options.height, options.deform == "on", deforms_on_gpu(options)},
-                 pass_timing_for_renderer(context.renderer()));
+  const bool images = !options.timings_only;
+  FrameLoopOptions loop_options{options.width, options.height, options.deform == "on", deforms_on_gpu(options)};
+  loop_options.capture_final = images;  // read back frames later through pixel-pack buffers, no stall
+  // Debug views are read from the pipeline's images, which must still hold the frame.
+  loop_options.serialized = options.debug_views;
+  FrameLoop loop(scene, settings, loop_options, pass_timing_for_renderer(context.renderer()));
   render::FramePipeline& pipeline = loop.pipeline();
 
   RenderRunRecord record(recorded, scene, context, loop.pass_timing(), frames);
@@ -321,25 +326,33 @@ int run_render_command(const RenderOptions& options) {
   std::optional<FfmpegVideoWriter> video;
   if (options.video)
     video.emplace(out.path() / "walkthrough.mp4", options.width, options.height, scene.walkthrough.frames_per_second);
+  // PNG encoding runs beside the loop (a bounded queue), so the GPU is not left idle meanwhile.
+  std::optional<PngWriterThread> png_writer;
+  if (images) png_writer.emplace();
 
   ProgressBar progress("render", frames.size());
   const auto run_start = Clock::now();
-  // Ctrl-C or SIGTERM: the frame under way is finished and written, then timings.csv and run.json are
-  // committed with the frames done so far.
+  // A frame that came back complete: its images go to the writer, its row to timings.csv.
+  const auto keep = [&](FrameMeasurement& measured) {
+    if (measured.final_image) {
+      if (video) video->add_frame(*measured.final_image);
+      png_writer->write(out.frame_path(measured.frame), std::move(*measured.final_image));
+    }
+    if (options.debug_views)
+      for (render::DebugView& view : pipeline.read_debug_views())
+        png_writer->write(out.debug_view_path(measured.frame, view.name), std::move(view.image));
+    timings.add_row(record.add_frame(measured));
+    progress.tick();
+  };
+  // Ctrl-C or SIGTERM: no new frame is started; the frames in flight are finished and written, then
+  // timings.csv and run.json are committed with the frames done so far.
   const InterruptionScope interruptible;
   for (const int frame : frames) {
     if (interruption_requested()) break;
-    const FrameMeasurement measured = loop.run(frame);
-    if (!options.timings_only) {
-      const ImageRgba8 image = pipeline.read_final();
-      write_png(out.frame_path(frame), image);
-      if (video) video->add_frame(image);
-    }
-    if (options.debug_views)
-      for (const render::DebugView& view : pipeline.read_debug_views()) write_png(out.debug_view_path(frame, view.name), view.image);
-    timings.add_row(record.add_frame(measured));
-    progress.tick();
+    for (FrameMeasurement& measured : loop.submit(frame)) keep(measured);
   }
+  for (FrameMeasurement& measured : loop.drain()) keep(measured);
+  if (png_writer) png_writer->finish();  // every PNG on disk (or the first error) before timings.csv
   progress.finish();
   if (video) video->finish();
   timings.commit();

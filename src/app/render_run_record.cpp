@@ -87,7 +87,7 @@ RenderRunRecord::RenderRunRecord(const RenderOptions& options, const Scene& scen
 std::vector<std::string> RenderRunRecord::timings_header() {
   std::vector<std::string> header{"frame"};
   for (const std::string_view pass : render::kFramePassNames) header.push_back(std::string(pass) + "_ms");
-  for (const char* column : {"gpu_total_ms", "cpu_frame_ms", "deform_ms", "accel_update_ms", "trace_ms", "triangles",
+  for (const char* column : {"gpu_total_ms", "frame_ms", "frame_latency_ms", "deform_ms", "accel_update_ms", "trace_ms", "triangles",
                              "reflective_pixels", "ssr_failed_pixels", "rays_traced", "resident_mb",
                              "gpu_memory_used_mb"})
     header.emplace_back(column);
@@ -113,7 +113,8 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   const auto& ssr = frame.ssr_counts;
   const auto& rays = frame.ray_stats;
   row.emplace_back(gpu_total_ms);
-  row.emplace_back(frame.cpu_frame_ms);
+  row.emplace_back(frame.frame_ms);
+  row.emplace_back(frame.latency_ms);
   row.emplace_back(frame.deform_ms);
   row.emplace_back(rays ? CsvField(frame.accel_update_ms) : CsvField(""));
   row.emplace_back(rays ? CsvField(rays->trace_ms) : CsvField(""));
@@ -126,7 +127,8 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   resident_.add(frame.resident_bytes);
   gpu_memory_.add(frame.gpu_memory_used_bytes);
   recorded["gpu_total_ms"] = gpu_total_ms;
-  recorded["cpu_frame_ms"] = frame.cpu_frame_ms;
+  recorded["frame_ms"] = frame.frame_ms;
+  recorded["frame_latency_ms"] = frame.latency_ms;
   recorded["deform_ms"] = frame.deform_ms;
   if (rays) {
     recorded["accel_update_ms"] = frame.accel_update_ms;

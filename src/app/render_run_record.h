@@ -27,11 +27,12 @@ public:
   RenderRunRecord(const RenderOptions& options, const Scene& scene, const HeadlessGlContext& context,
                   PassTimingMethod pass_timing, const std::vector<int>& frames);
 
-  // What one frame measured (FrameLoop::run).
+  // What one frame measured (FrameLoop::submit/drain).
   using Frame = FrameMeasurement;
 
   // Column names of timings.csv: frame, <pass>_ms for every pass of render::kFramePassNames,
-  // gpu_total_ms, cpu_frame_ms, deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,
+  // gpu_total_ms, frame_ms (steady state: previous frame's completion to this one's),
+  // frame_latency_ms (this frame's CPU start to its GPU end), deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,
   // ssr_failed_pixels, rays_traced, resident_mb, gpu_memory_used_mb.
   static std::vector<std::string> timings_header();
 
@@ -55,7 +56,7 @@ private:
   nlohmann::json run_;
   std::size_t triangles_ = 0;
   // Running sums, so a run of any length holds the same few numbers (docs/reliability.md's soak runs):
-  // the first frame's values by column name (passes, gpu_total, cpu_frame, deform, ...) and the sums
+  // the first frame's values by column name (passes, gpu_total, frame, frame_latency, deform, ...) and the sums
   // over the later frames, which the means use.
   std::map<std::string, double> first_frame_;
   std::map<std::string, double> later_sums_;

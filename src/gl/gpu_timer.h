@@ -1,9 +1,15 @@
 #pragma once
-// GPU time per named pass from GL_TIME_ELAPSED queries, double-buffered: frame N records into one
-// set of queries while frame N-1's set is read back, so reading a result never waits for the frame
-// that issued it. A set is reused two frames later; only if the GPU is still two frames behind does
-// begin_frame() wait for it. Every frame's timings come out of take_completed() exactly once, in
-// frame order (a timings.csv row each).
+// GPU time per named pass from GL_TIME_ELAPSED queries, in a ring of kFramesInFlight query sets:
+// frame N records into one set while the sets of frames N-1 and N-2 are still in flight, and a
+// set's results are read only once GL_QUERY_RESULT_AVAILABLE says they are there (take_completed,
+// take_frame), so reading never stalls the pipeline. A set is reused kFramesInFlight frames later;
+// only if its results were not read by then does begin_frame() wait for them. Every frame's timings
+// come out exactly once, in frame order (a timings.csv row each).
+//
+// Each frame also gets its latency (begin_frame() to the GPU finishing everything issued before
+// end_frame()) and the time it completed, so consecutive frames give the steady-state frame time:
+// with queries a GL_TIMESTAMP query at end_frame() against the GPU clock read at begin_frame();
+// with wall clock, steady_clock at the end of end_frame()'s glFinish.
 //
 //   timer.begin_frame();
 //   { auto scope = timer.time_pass("ssr"); ssr.run(); }
@@ -17,10 +23,13 @@
 // glFinish() calls (PassTimingMethod::finish_wall_clock). That serialises CPU and GPU, which is the
 // truth for a software renderer anyway; on a real GPU it would hide overlap, so queries stay the default.
 #include "gl/gl_objects.h"
+#include "gl/readback_ring.h"
 
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +37,7 @@
 namespace glint {
 
 enum class PassTimingMethod {
-  gpu_queries,        // GL_TIME_ELAPSED queries, double-buffered, no stalls
+  gpu_queries,        // GL_TIME_ELAPSED queries in a ring, no stalls
   finish_wall_clock,  // glFinish() before and after every pass, steady_clock in between
 };
 
@@ -45,6 +54,8 @@ struct PassTime {
 struct FrameTimes {
   std::uint64_t frame = 0;  // 0 for the first begin_frame(), then 1, 2, ...
   std::vector<PassTime> passes;  // in the order they ran
+  double latency_ms = 0.0;       // begin_frame() to the GPU finishing the frame's work (end_frame())
+  double completed_at_ms = 0.0;  // when the GPU finished it, on the timer's own clock (only differences mean anything)
 };
 
 class GpuTimer {
@@ -74,10 +85,13 @@ public:
   };
   [[nodiscard]] PassScope time_pass(std::string_view name) { return PassScope(*this, name); }
 
-  // Frames whose results have arrived since the last call, oldest first.
+  // Frames whose results have arrived since the last call, oldest first (never waits).
   std::vector<FrameTimes> take_completed();
   // Waits for every ended frame's results (end of a run, tests); then take_completed() has them all.
   void wait_for_all();
+  // The results of ended frame `frame` (FrameTimes::frame numbering) and of no other: nullopt when
+  // they have not arrived and `wait` is false. glint::Error for a frame not ended or already taken.
+  std::optional<FrameTimes> take_frame(std::uint64_t frame, bool wait);
 
 private:
   struct QuerySet {
@@ -85,16 +99,23 @@ private:
     bool pending = false;       // ended, results not read yet
     std::vector<GlQuery> queries;  // grows to the most passes a frame has used; reused after that
     std::vector<std::string> names;  // names[i] belongs to queries[i]; size = passes this frame
+    GlQuery end_stamp;               // GL_TIMESTAMP at end_frame()
+    std::int64_t start_ns = 0;       // the GPU clock at begin_frame()
   };
 
-  QuerySet& current() { return sets_[next_frame_ % 2]; }
+  QuerySet& current() { return sets_[next_frame_ % kFramesInFlight]; }
+  bool available(const QuerySet& set) const;
+  // Collects the pending sets of frames up to `last_frame`, oldest first, stopping at the first
+  // whose results are not there (or waiting for them, when `wait`), so completed_ stays in order.
+  void collect_in_order(bool wait, std::uint64_t last_frame = std::numeric_limits<std::uint64_t>::max());
   // Reads `set`'s results into completed_ if they are available or `wait`; returns whether it did.
   bool collect(QuerySet& set, bool wait);
 
   PassTimingMethod method_;
   std::chrono::steady_clock::time_point pass_start_;  // finish_wall_clock: when the open pass began
+  std::chrono::steady_clock::time_point frame_start_;  // finish_wall_clock: begin_frame()
   FrameTimes wall_clock_frame_;                        // finish_wall_clock: the frame being measured
-  std::array<QuerySet, 2> sets_;
+  std::array<QuerySet, kFramesInFlight> sets_;
   std::uint64_t next_frame_ = 0;  // the frame begin_frame() starts next; current one while in a frame
   bool in_frame_ = false;
   bool in_pass_ = false;

@@ -1,9 +1,12 @@
 #include "render/frame_pipeline.h"
 
+#include "core/error.h"
 #include "gl/gl_check.h"
 #include "render/debug_views.h"
 #include "render/render_targets.h"
 #include "render/texture_readback.h"
+
+#include <cstring>
 
 namespace glint::render {
 namespace {
@@ -72,21 +75,67 @@ double FramePipeline::update_ray_tracer_on_device(std::span<const std::uint32_t>
 GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection() : own_reflection_.id(); }
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
+  const auto slot = static_cast<std::size_t>(frames_rendered_ % kFramesInFlight);
   raster_.render(frame, timer);
   if (ssr_) {
     run_timed_pass(timer, "ssr", [&] {
       ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
                  raster_.lit(), raster_.frame_constants_buffer()});
     });
+    ssr_->request_counts(slot);  // outside the pass's time: a copy of 8 bytes and a fence
   }
   if (ray_traced_) {
     // rt: the ray tracer writes every reflective pixel of a cleared image; hybrid: SSR's failed ones.
     if (!ssr_) clear_reflection(own_reflection_.id());
     ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
-    ray_traced_a_frame_ = true;
   }
   run_timed_pass(timer, "resolve",
                  [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image()}); });
+  final_captured_[slot] = final_readback_.has_value();
+  if (final_readback_)
+    final_readback_->capture_texture(slot, resolve_.final_image(), GL_RGBA, GL_UNSIGNED_BYTE,
+                                     final_readback_->slot_bytes());
+  ++frames_rendered_;
+}
+
+void FramePipeline::set_final_capture(bool on) {
+  if (!on) {
+    final_readback_.reset();
+    return;
+  }
+  if (final_readback_) return;
+  // kFinalFormat is RGBA8: its bytes are read as they are, exactly what read_final() quantises to.
+  static_assert(kFinalFormat == GL_RGBA8);
+  final_readback_.emplace(kFramesInFlight,
+                          static_cast<std::size_t>(width()) * static_cast<std::size_t>(height()) * 4, "final image");
+}
+
+std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, bool wait) {
+  if (frame >= frames_rendered_ || frames_rendered_ - frame > kFramesInFlight)
+    fail("frame pipeline: readback of frame {} asked after {} frames (the last {} are kept)", frame, frames_rendered_,
+         kFramesInFlight);
+  const auto slot = static_cast<std::size_t>(frame % kFramesInFlight);
+  FrameReadback readback;
+  if (ssr_) {
+    readback.ssr_counts = ssr_->requested_counts(slot, wait);
+    if (!readback.ssr_counts) return std::nullopt;
+  }
+  if (ray_traced_) {
+    // Pipeline frames and ray-traced runs go in step: every frame traces.
+    readback.ray_stats = ray_traced_->take_stats(ray_traced_->runs() - (frames_rendered_ - frame), wait);
+    if (!readback.ray_stats) return std::nullopt;
+  }
+  if (final_readback_ && final_captured_[slot]) {
+    const std::span<const std::byte> bytes = final_readback_->read(slot, wait);
+    if (bytes.empty()) return std::nullopt;
+    ImageRgba8 image(width(), height());
+    const std::size_t row_bytes = static_cast<std::size_t>(width()) * 4;
+    for (int y = 0; y < height(); ++y)  // GL's rows are bottom first
+      std::memcpy(image.pixels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width()),
+                  bytes.data() + static_cast<std::size_t>(height() - 1 - y) * row_bytes, row_bytes);
+    readback.final_image = std::move(image);
+  }
+  return readback;
 }
 
 ImageRgba8 FramePipeline::read_final() const {
@@ -94,7 +143,7 @@ ImageRgba8 FramePipeline::read_final() const {
 }
 
 std::optional<RayTraceFrameStats> FramePipeline::ray_trace_stats() {
-  if (!ray_traced_ || !ray_traced_a_frame_) return std::nullopt;
+  if (!ray_traced_ || ray_traced_->runs() == 0) return std::nullopt;
   return ray_traced_->frame_stats();
 }
 

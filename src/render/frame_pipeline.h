@@ -10,9 +10,14 @@
 //   pipeline.render(animation.at(frame), &timer);
 //   timer.end_frame();
 //   write_png(path, pipeline.read_final());
+//
+// Pipelined use (app/frame_loop.h): render() also queues copies of the frame's counters (and, with
+// set_final_capture(true), of its final image) into readback slots, one per frame in flight
+// (gl/readback_ring.h), and take_readback(n) reads frame n's frames later without stalling.
 #include "core/image.h"
 #include "gl/gl_objects.h"
 #include "gl/gpu_timer.h"
+#include "gl/readback_ring.h"
 #include "render/raster_pipeline.h"
 #include "render/raster_settings.h"
 #include "render/ray_traced_reflections.h"
@@ -24,6 +29,7 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -46,6 +52,13 @@ struct FramePipelineSettings {
   RayTracingSettings ray_tracing;  // hybrid and rt only
 
   void validate() const;  // throws glint::Error naming the first bad setting
+};
+
+// What a frame counted (and, with final capture, its final image), read back after the GPU finished it.
+struct FrameReadback {
+  std::optional<SsrCounts> ssr_counts;           // with SSR
+  std::optional<RayTraceFrameStats> ray_stats;   // with ray tracing
+  std::optional<ImageRgba8> final_image;         // with set_final_capture(true): read_final()'s pixels
 };
 
 // An image a frame produced besides the final one, made viewable as 8-bit RGBA.
@@ -72,6 +85,15 @@ public:
   // In hybrid and rt modes with a CPU backend, the CPU waits for the ray list in the middle of the
   // frame; with a GPU backend (cuda) nothing waits.
   void render(const FrameState& frame, GpuTimer* timer = nullptr);
+
+  // Frames render() was called for; frame n (0, 1, ...) is the (n+1)-th call.
+  std::uint64_t frames_rendered() const { return frames_rendered_; }
+  // On: every later render() also copies its final image into a pixel-pack readback slot.
+  void set_final_capture(bool on);
+  // Frame `frame`'s counters (and captured image), one of the last kFramesInFlight frames rendered:
+  // nullopt while the GPU has not finished their copies and `wait` is false; with `wait` it waits.
+  // glint::Error for an older or a future frame.
+  std::optional<FrameReadback> take_readback(std::uint64_t frame, bool wait);
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
   ImageRgba8 read_final() const;
@@ -104,11 +126,13 @@ private:
   RasterPipeline raster_;
   std::optional<SsrPass> ssr_;
   std::optional<RayTracedReflections> ray_traced_;
-  bool ray_traced_a_frame_ = false;
   ResolvePass resolve_;
   // The reflection image when SSR does not make one: all zero (off), or cleared and filled by the
   // ray tracer every frame (rt). In hybrid the ray tracer fills SSR's failed pixels instead.
   GlTexture own_reflection_;
+  std::uint64_t frames_rendered_ = 0;
+  std::optional<ReadbackRing> final_readback_;  // with final capture: RGBA8, rows bottom first
+  std::array<bool, kFramesInFlight> final_captured_{};  // per slot: that frame's image was captured
 };
 
 }  // namespace glint::render

@@ -5,7 +5,7 @@
 #include "render/render_targets.h"
 
 #include <array>
-#include <chrono>
+#include <cstring>
 
 namespace glint::render {
 namespace {
@@ -23,7 +23,8 @@ GlBuffer create_mapped_buffer(std::size_t bytes, GLbitfield access, void** mappe
 
 }  // namespace
 
-RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory) : capacity_(capacity), memory_(memory) {
+RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory)
+    : capacity_(capacity), memory_(memory), counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ray counters") {
   if (capacity == 0) fail("ray buffers: capacity must be at least one ray");
   void* mapped = nullptr;
   if (memory == RayHitMemory::host_mapped) {
@@ -35,15 +36,9 @@ RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory) : capaci
     rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
     hits_ = create_buffer(capacity * sizeof(accel::Hit), nullptr, 0);
   }
-  counters_readback_ = create_mapped_buffer(2 * sizeof(std::uint32_t), GL_MAP_READ_BIT, &mapped, "counter");
-  mapped_counters_ = static_cast<const std::uint32_t*>(mapped);
   pixels_ = create_buffer(capacity * sizeof(std::uint32_t), nullptr, 0);
   counters_ = create_buffer(2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
   check_gl("ray buffers: create");
-}
-
-RayHitBuffers::~RayHitBuffers() {
-  if (counts_fence_ != nullptr) glDeleteSync(counts_fence_);
 }
 
 void RayHitBuffers::reset_counters() {
@@ -58,33 +53,23 @@ void RayHitBuffers::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRayCounterBinding, counters_.id());
 }
 
-RayListCounts RayHitBuffers::finish_ray_list() {
-  request_counts();
-  return read_requested_counts();
+RayListCounts RayHitBuffers::finish_ray_list(std::size_t slot) {
+  request_counts(slot);
+  return *requested_counts(slot, /*wait=*/true);
 }
 
-void RayHitBuffers::request_counts() {
-  // Shader writes to a persistently mapped buffer reach the CPU only after this barrier and a fence.
-  glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glCopyNamedBufferSubData(counters_.id(), counters_readback_.id(), 0, 0, 2 * sizeof(std::uint32_t));
-  if (counts_fence_ != nullptr) glDeleteSync(counts_fence_);
-  counts_fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  if (counts_fence_ == nullptr) fail("ray buffers: glFenceSync failed");
+void RayHitBuffers::request_counts(std::size_t slot) {
+  // The ring's copy comes after a barrier that also makes the ray list's shader writes reach the
+  // persistently mapped rays, and its fence covers both.
+  counts_readback_.copy_buffer(slot, counters_.id(), 2 * sizeof(std::uint32_t));
 }
 
-RayListCounts RayHitBuffers::read_requested_counts() {
-  GLsync fence = counts_fence_;
-  if (fence == nullptr) fail("ray buffers: counters read without request_counts()");
-  counts_fence_ = nullptr;
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::minutes(1);
-  GLenum status = GL_TIMEOUT_EXPIRED;
-  while (status == GL_TIMEOUT_EXPIRED && std::chrono::steady_clock::now() < give_up)
-    status = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 100'000'000);  // 100 ms per wait
-  glDeleteSync(fence);
-  if (status == GL_WAIT_FAILED) fail("ray buffers: waiting for the ray list failed (glClientWaitSync)");
-  if (status == GL_TIMEOUT_EXPIRED) fail("ray buffers: the GPU did not finish the ray list within a minute");
-  check_gl("ray buffers: read counters");
-  RayListCounts counts{mapped_counters_[0], mapped_counters_[1]};
+std::optional<RayListCounts> RayHitBuffers::requested_counts(std::size_t slot, bool wait) {
+  const std::span<const std::byte> bytes = counts_readback_.read(slot, wait);
+  if (bytes.empty()) return std::nullopt;
+  std::array<std::uint32_t, 2> values{0, 0};
+  std::memcpy(values.data(), bytes.data(), sizeof(values));
+  const RayListCounts counts{values[0], values[1]};
   if (counts.rays > capacity_)
     fail("ray buffers: the ray list reports {} rays, more than its capacity {}", counts.rays, capacity_);
   return counts;

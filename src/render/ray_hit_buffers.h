@@ -10,15 +10,18 @@
 //   pixels   (kRayPixelBinding):   uint[capacity]        y * width + x of ray i; GPU only
 //   hits     (kHitBinding):        accel::Hit[capacity]  the CPU tracer writes, hit shading reads
 //   counters (kRayCounterBinding): uint[2]               [0] rays in the list, [1] reflective pixels;
-//            GPU atomics in device memory, copied to a mapped readback buffer by finish_ray_list()
+//            GPU atomics in device memory, copied into a slot of a readback ring (one slot per frame
+//            in flight, gl/readback_ring.h) by finish_ray_list() or request_counts()
 // std430 lays `struct { vec3 origin; float t_min; vec3 direction; float t_max; }` out exactly as
 // accel::Ray (32 bytes) and `struct { float t; uint instance, prim; float u, v; }` as accel::Hit
 // (20 bytes), so the CPU tracer reads and writes the mapped memory in place.
 #include "accel/ray.h"
 #include "gl/gl_objects.h"
+#include "gl/readback_ring.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace glint::render {
@@ -34,8 +37,7 @@ class RayHitBuffers {
 public:
   // Needs a current GL context; throws glint::Error for capacity 0.
   explicit RayHitBuffers(std::size_t capacity, RayHitMemory memory = RayHitMemory::host_mapped);
-  ~RayHitBuffers();
-  RayHitBuffers(const RayHitBuffers&) = delete;  // owns a fence and mapped pointers
+  RayHitBuffers(const RayHitBuffers&) = delete;  // owns mapped pointers
   RayHitBuffers& operator=(const RayHitBuffers&) = delete;
 
   // Zeroes the device counters (before the ray-list pass).
@@ -44,15 +46,16 @@ public:
   void bind() const;
 
   // After the ray-list pass was issued: makes its writes visible to the CPU, copies the counters to
-  // the readback buffer, waits for the GPU (a fence; glint::Error if it fails or the GPU stalls
-  // for a minute) and returns them. The rays are readable through rays() afterwards.
-  RayListCounts finish_ray_list();
+  // readback slot `slot` (< kFramesInFlight), waits for the GPU (a fence; glint::Error if it fails
+  // or the GPU stalls for a minute) and returns them. The rays are readable through rays() afterwards.
+  RayListCounts finish_ray_list(std::size_t slot);
 
   // The same in two halves, for GPU backends, whose frame must not wait for the counters:
-  // request_counts() queues their copy behind the GL work issued so far (and a fence);
-  // read_requested_counts() waits for that fence and returns them. glint::Error without a request.
-  void request_counts();
-  RayListCounts read_requested_counts();
+  // request_counts() queues their copy into `slot` behind the GL work issued so far (and a fence);
+  // requested_counts() reads them once the GPU is past it (waiting when `wait`; else nullopt when
+  // they are not there yet). glint::Error for a slot never requested, or counts beyond the capacity.
+  void request_counts(std::size_t slot);
+  std::optional<RayListCounts> requested_counts(std::size_t slot, bool wait);
 
   // host_mapped only: the first `count` rays / hits of the mapped buffers; glint::Error beyond the
   // capacity, or for device memory.
@@ -70,11 +73,10 @@ public:
 private:
   std::size_t capacity_;
   RayHitMemory memory_;
-  GLsync counts_fence_ = nullptr;  // set by request_counts()
-  GlBuffer rays_, pixels_, hits_, counters_, counters_readback_;
+  GlBuffer rays_, pixels_, hits_, counters_;
+  ReadbackRing counts_readback_;
   accel::Ray* mapped_rays_ = nullptr;
   accel::Hit* mapped_hits_ = nullptr;
-  const std::uint32_t* mapped_counters_ = nullptr;
 };
 
 }  // namespace glint::render

@@ -67,38 +67,65 @@ double RayTracedReflections::update_meshes(const Scene& scene, std::span<const s
   return milliseconds_since(start);
 }
 
+std::size_t RayTracedReflections::slot_of(std::uint64_t run) const {
+  if (run >= runs_ || runs_ - run > kFramesInFlight)
+    fail("ray tracing: statistics of run {} asked after {} runs (the last {} are kept)", run, runs_, kFramesInFlight);
+  return static_cast<std::size_t>(run % kFramesInFlight);
+}
+
 void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer) {
+  const auto slot = static_cast<std::size_t>(runs_ % kFramesInFlight);
   run_timed_pass(timer, "ray_list", [&] {
     ray_list_.run({raster.albedo_reflectivity(), raster.world_position(), raster.world_normal_roughness(),
                    failure_mask, raster.frame_constants_buffer()});
   });
   // A CPU backend needs the list in host memory now; a GPU backend reads the count on the GPU.
-  const RayListCounts host_counts = device_ ? RayListCounts{} : buffers_.finish_ray_list();
-  trace(host_counts);
+  const RayListCounts host_counts = device_ ? RayListCounts{} : buffers_.finish_ray_list(slot);
+  trace(host_counts, slot);
   const auto max_rays = static_cast<std::uint32_t>(device_ ? buffers_.capacity() : host_counts.rays);
   run_timed_pass(timer, "hit_shade", [&] {
     hit_shading_.run({&raster.gpu_scene(), &raster.shadow_cube(), &raster.settings(), raster.frame_constants_buffer(),
                       reflection},
                      max_rays);
   });
-  if (device_) buffers_.request_counts();
+  if (device_) buffers_.request_counts(slot);  // read frames later, when the GPU is past them
+  ++runs_;
 }
 
-void RayTracedReflections::trace(RayListCounts host_counts) {
+void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot) {
   if (!device_) {
-    last_stats_ = {host_counts.rays, host_counts.reflective, 0.0};
+    RayTraceFrameStats& stats = slot_stats_[slot];
+    stats = {host_counts.rays, host_counts.reflective, 0.0};
     const auto trace_start = Clock::now();
     tracer_->trace_closest(buffers_.rays(host_counts.rays), buffers_.hits(host_counts.rays));
-    last_stats_.trace_ms = milliseconds_since(trace_start);
-    stats_pending_ = false;
+    stats.trace_ms = milliseconds_since(trace_start);
     return;
+  }
+  // The tracer keeps one pair of CUDA events: the previous run's trace time is read before this
+  // trace overwrites it. That waits for the previous frame's trace only, which the GPU reaches
+  // before this frame's work, so the GPU never runs dry here.
+  if (trace_time_pending_) {
+    slot_stats_[slot_of(*trace_time_pending_)].trace_ms = device_->last_trace_ms();
+    trace_time_pending_.reset();
   }
   // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the
   // trace. Both happen on the GPU: the host only enqueues.
   cuda::ScopedInteropMap mapped(*interop_, device_->stream());
   device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
                                 mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(buffers_.capacity()));
-  stats_pending_ = true;
+  trace_time_pending_ = runs_;
+}
+
+std::optional<RayTraceFrameStats> RayTracedReflections::take_stats(std::uint64_t run, bool wait) {
+  const std::size_t slot = slot_of(run);
+  if (!device_) return slot_stats_[slot];
+  const std::optional<RayListCounts> counts = buffers_.requested_counts(slot, wait);
+  if (!counts) return std::nullopt;
+  if (trace_time_pending_ == run) {  // the GPU passed the frame's hit shading, so its trace has ended
+    slot_stats_[slot].trace_ms = device_->last_trace_ms();
+    trace_time_pending_.reset();
+  }
+  return RayTraceFrameStats{counts->rays, counts->reflective, slot_stats_[slot].trace_ms};
 }
 
 double RayTracedReflections::update_meshes_on_device(std::span<const std::uint32_t> dirty_meshes) {
@@ -109,12 +136,8 @@ double RayTracedReflections::update_meshes_on_device(std::span<const std::uint32
 }
 
 RayTraceFrameStats RayTracedReflections::frame_stats() {
-  if (stats_pending_) {
-    const RayListCounts counts = buffers_.read_requested_counts();
-    last_stats_ = {counts.rays, counts.reflective, device_->last_trace_ms()};
-    stats_pending_ = false;
-  }
-  return last_stats_;
+  if (runs_ == 0) fail("ray tracing: statistics asked before the first frame");
+  return *take_stats(runs_ - 1, /*wait=*/true);
 }
 
 }  // namespace glint::render

@@ -23,6 +23,7 @@
 
 #include <epoxy/gl.h>
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -70,9 +71,15 @@ public:
   // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
   // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GL steps
   // are timed as "ray_list" and "hit_shade"; with a CPU backend the CPU waits for the ray list in
-  // between, with a GPU backend nothing waits. The frame's statistics come from frame_stats().
+  // between, with a GPU backend nothing waits. The frame's statistics come from take_stats() (runs
+  // are numbered 0, 1, ...; the last kFramesInFlight are kept) or frame_stats().
   void run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer);
+  std::uint64_t runs() const { return runs_; }
 
+  // The statistics of run `run`, one of the last kFramesInFlight. CPU backends know them at once;
+  // with a GPU backend they come from a readback slot and CUDA events: nullopt while the GPU has
+  // not finished that frame and `wait` is false. glint::Error for an older or a future run.
+  std::optional<RayTraceFrameStats> take_stats(std::uint64_t run, bool wait);
   // The statistics of the last run(); with a GPU backend, waits for that frame's GPU work first.
   RayTraceFrameStats frame_stats();
 
@@ -84,15 +91,21 @@ public:
 
 private:
   RayTracingSettings settings_;
-  // Traces this frame's list; CPU backends: returns the stats, GPU backends: leaves them pending.
-  void trace(RayListCounts host_counts);
+  // Traces this frame's list; CPU backends: records the stats, GPU backends: leaves them pending.
+  void trace(RayListCounts host_counts, std::size_t slot);
+  std::size_t slot_of(std::uint64_t run) const;
 
   std::unique_ptr<rt::RayTracer> tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
   RayHitBuffers buffers_;
   std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only
-  RayTraceFrameStats last_stats_;
-  bool stats_pending_ = false;  // GPU backend: last_stats_ still needs the counters and the trace time
+  // Per readback slot (run % kFramesInFlight): CPU backends' statistics, or a GPU backend's trace
+  // time once read (the counters are in buffers_' slot).
+  std::array<RayTraceFrameStats, kFramesInFlight> slot_stats_{};
+  std::uint64_t runs_ = 0;
+  // GPU backend: the run whose trace time is still in the tracer's CUDA events (read before the next
+  // trace overwrites them).
+  std::optional<std::uint64_t> trace_time_pending_;
   RayListPass ray_list_;
   HitShadingPass hit_shading_;
 };

@@ -8,6 +8,7 @@
 #include "render/render_targets.h"
 
 #include <array>
+#include <cstring>
 
 namespace glint::render {
 namespace {
@@ -19,7 +20,8 @@ constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit =
 }  // namespace
 
 SsrPass::SsrPass(int width, int height, const SsrSettings& settings)
-    : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})) {
+    : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})),
+      counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ssr counters") {
   set_settings(settings);
   counters_ = create_buffer(2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
   resize(width, height);
@@ -83,6 +85,18 @@ SsrCounts SsrPass::read_counts() const {
   glGetNamedBufferSubData(counters_.id(), 0, sizeof(values), values.data());
   check_gl("ssr: read counters");
   return {values[0], values[1]};
+}
+
+void SsrPass::request_counts(std::size_t slot) {
+  counts_readback_.copy_buffer(slot, counters_.id(), 2 * sizeof(std::uint32_t));
+}
+
+std::optional<SsrCounts> SsrPass::requested_counts(std::size_t slot, bool wait) {
+  const std::span<const std::byte> bytes = counts_readback_.read(slot, wait);
+  if (bytes.empty()) return std::nullopt;
+  std::array<std::uint32_t, 2> values{0, 0};
+  std::memcpy(values.data(), bytes.data(), sizeof(values));
+  return SsrCounts{values[0], values[1]};
 }
 
 }  // namespace glint::render

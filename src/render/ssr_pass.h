@@ -10,12 +10,15 @@
 //                   not an atomic-counter buffer).
 // docs/ssr.md states the algorithm, the failure rules and the confidence formula.
 #include "gl/gl_objects.h"
+#include "gl/readback_ring.h"
 #include "gl/shader_program.h"
 #include "render/ssr_settings.h"
 
 #include <epoxy/gl.h>
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 
 namespace glint::render {
 
@@ -60,6 +63,11 @@ public:
   // The counters of the last run(). It waits for the GPU: for tests, statistics and debug output,
   // never inside timed frame code.
   SsrCounts read_counts() const;
+  // Without waiting: queues a copy of the last run()'s counters into readback slot `slot`
+  // (< kFramesInFlight), and reads it frames later, once the GPU is past it (or waiting when
+  // `wait`; nullopt when it is not there yet and `wait` is false).
+  void request_counts(std::size_t slot);
+  std::optional<SsrCounts> requested_counts(std::size_t slot, bool wait);
 
 private:
   ShaderProgram program_;
@@ -69,6 +77,7 @@ private:
   GlTexture reflection_;
   GlTexture failure_mask_;
   GlBuffer counters_;
+  ReadbackRing counts_readback_;
 };
 
 }  // namespace glint::render

@@ -47,7 +47,7 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
   ASSERT_EQ(csv.size(), 3u) << "header + one row per frame";
   const std::vector<std::string> header = {
       "frame",        "shadow_ms",       "gbuffer_ms", "light_ms",  "ssr_ms",            "ray_list_ms",
-      "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "cpu_frame_ms", "deform_ms",   "accel_update_ms",
+      "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "frame_ms", "frame_latency_ms", "deform_ms", "accel_update_ms",
       "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced",
       "resident_mb",  "gpu_memory_used_mb"};
   EXPECT_EQ(csv[0], header);
@@ -57,12 +57,14 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
     ASSERT_EQ(csv[row].size(), header.size());
     for (std::size_t column = 1; column < header.size() - 1; ++column)
       EXPECT_GE(std::stod(csv[row][column]), 0.0) << header[column];
-    EXPECT_GT(std::stod(csv[row][17]), 10.0) << "a GL process holds more than 10 MiB";
-    if (!csv[row][18].empty()) {
-      EXPECT_GT(std::stod(csv[row][18]), 0.0) << "GPU memory in use (NVIDIA only)";
+    EXPECT_GT(std::stod(csv[row][18]), 10.0) << "a GL process holds more than 10 MiB";
+    if (!csv[row][19].empty()) {
+      EXPECT_GT(std::stod(csv[row][19]), 0.0) << "GPU memory in use (NVIDIA only)";
     }
-    EXPECT_LE(std::stoul(csv[row][15]), std::stoul(csv[row][14])) << "failed pixels are reflective pixels";
-    EXPECT_EQ(csv[row][16], csv[row][15]) << "hybrid traces exactly the failed pixels";
+    EXPECT_GT(std::stod(csv[row][9]), 0.0) << "frame_ms";
+    EXPECT_GT(std::stod(csv[row][10]), 0.0) << "frame_latency_ms";
+    EXPECT_LE(std::stoul(csv[row][16]), std::stoul(csv[row][15])) << "failed pixels are reflective pixels";
+    EXPECT_EQ(csv[row][17], csv[row][16]) << "hybrid traces exactly the failed pixels";
   }
 
   const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
@@ -95,8 +97,8 @@ TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoIm
   EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 19u);
-  for (const int column : {4, 5, 6, 11, 12, 14, 15, 16})
+  ASSERT_EQ(csv[1].size(), 20u);
+  for (const int column : {4, 5, 6, 12, 13, 15, 16, 17})
     EXPECT_EQ(csv[1][column], "") << "column " << column << " (no SSR, no ray tracing)";
 }
 
@@ -108,11 +110,11 @@ TEST_F(RenderCli, RtModeWithEmbreeTracesEveryReflectivePixel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 19u);
+  ASSERT_EQ(csv[1].size(), 20u);
   EXPECT_EQ(csv[1][4], "") << "no SSR in rt mode";
-  EXPECT_EQ(csv[1][15], "") << "no SSR failures in rt mode";
-  EXPECT_GT(std::stoul(csv[1][16]), 0u);
-  EXPECT_EQ(csv[1][16], csv[1][14]) << "rt traces every reflective pixel";
+  EXPECT_EQ(csv[1][16], "") << "no SSR failures in rt mode";
+  EXPECT_GT(std::stoul(csv[1][17]), 0u);
+  EXPECT_EQ(csv[1][17], csv[1][15]) << "rt traces every reflective pixel";
   const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
   EXPECT_EQ(run["ray_tracer"]["backend"], "embree");
   EXPECT_EQ(run["ray_tracer"]["update"], "rebuild");

@@ -47,11 +47,12 @@ nlohmann::json mean_or_null(const std::vector<double>& values) {
 void add_frame_time_statistics(nlohmann::json& entry, const CsvTable& table, std::size_t interval) {
   std::vector<int> frames;
   for (const auto& row : table.rows) frames.push_back(std::stoi(row[0]));
-  const std::vector<double> frame_ms = column_values(table, "cpu_frame_ms");
+  const std::vector<double> frame_ms = column_values(table, "frame_ms");
   entry["frames"] = frames.size();
   entry["first_frame"] = frames.front();
   entry["last_frame"] = frames.back();
   entry["frame_ms"] = series_json(summarize(frame_ms));
+  entry["frame_latency_ms"] = series_json(summarize(column_values(table, "frame_latency_ms")));
   entry["gpu_total_ms"] = series_json(summarize(column_values(table, "gpu_total_ms")));
   entry["mean_ms"] = {{"deform", mean_or_null(column_values(table, "deform_ms"))},
                       {"accel_update", mean_or_null(column_values(table, "accel_update_ms"))},

@@ -24,8 +24,9 @@ struct CellOutcome {
 std::string_view state_name(CellOutcome::State state);
 
 // The summary entry of `cell`: what it measures and its outcome; for a done frame-times cell the
-// statistics of its frame times (cpu_frame_ms: wall clock of the whole frame, deform and update
-// included, as the paper's frame time), the means of its other columns and the interval means; for
+// statistics of its frame times (frame_ms: the steady-state time between consecutive frames'
+// completions, deform and update included, as the paper's frame rate; and frame_latency_ms, each
+// frame's start to its end), the means of its other columns and the interval means; for
 // a done quality cell its rows; and the side file's scene statistics (scene_stats) and tracer
 // statistics (ray_tracer). `interval`: measured frames
 // per interval mean. glint::Error when a done cell's files cannot be read.

@@ -1,0 +1,79 @@
+#include "app/png_writer_thread.h"
+
+#include "core/error.h"
+#include "core/log.h"
+
+#include <csignal>
+#include <exception>
+
+#include <pthread.h>
+
+namespace glint {
+
+PngWriterThread::PngWriterThread(std::size_t max_queued) : max_queued_(max_queued == 0 ? 1 : max_queued) {
+  worker_ = std::thread([this] { work(); });
+}
+
+PngWriterThread::~PngWriterThread() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  worker_.join();
+  if (error_ && !error_reported_) log_warning("{}", *error_);
+}
+
+void PngWriterThread::write(std::filesystem::path path, ImageRgba8 image) {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return error_ || queue_.size() < max_queued_; });
+  if (error_) {
+    error_reported_ = true;
+    throw Error(*error_);
+  }
+  queue_.emplace_back(std::move(path), std::move(image));
+  lock.unlock();
+  changed_.notify_all();
+}
+
+void PngWriterThread::finish() {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return error_ || (queue_.empty() && !writing_); });
+  if (error_) {
+    error_reported_ = true;
+    throw Error(*error_);
+  }
+}
+
+void PngWriterThread::work() {
+  // SIGINT and SIGTERM go to the render loop's thread, which decides when to stop (core/interruption.h).
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  std::unique_lock lock(mutex_);
+  while (true) {
+    changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
+    if (queue_.empty()) return;  // stopping, with every file written
+    auto [path, image] = std::move(queue_.front());
+    queue_.pop_front();
+    writing_ = true;
+    lock.unlock();
+    changed_.notify_all();  // room in the queue
+    std::optional<std::string> failure;
+    try {
+      write_png(path, image);
+    } catch (const std::exception& error) {
+      failure = error.what();
+    }
+    lock.lock();
+    writing_ = false;
+    if (failure && !error_) error_ = std::move(failure);
+    if (error_) queue_.clear();  // nothing after a failure is written
+    changed_.notify_all();
+  }
+}
+
+}  // namespace glint

@@ -1,0 +1,42 @@
+// `glint render`'s pipelined loop: timings.csv has every requested frame exactly once, in frame
+// order, with every column filled that the mode measures, and a PNG for each of those frames.
+#include "app/cli_runner.h"
+#include "core/image.h"
+#include "support/temp_folder.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace glint::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(RenderTimingsRows, EveryFrameOnceInOrderWithNoEmptyField) {
+  TempFolder folder;
+  const fs::path out = folder.path() / "run";
+  const CliResult r = run_glint("render atrium-simple --reflections hybrid --backend cpu --width 32 --height 18 "
+                                "--frames 100:112:2,200 --out " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> frames = {"100", "102", "104", "106", "108", "110", "112", "200"};
+  const auto csv = read_csv(out / "timings.csv");
+  ASSERT_EQ(csv.size(), frames.size() + 1) << "header + one row per frame";
+  const std::vector<std::string>& header = csv[0];
+  for (std::size_t row = 1; row < csv.size(); ++row) {
+    ASSERT_EQ(csv[row].size(), header.size());
+    EXPECT_EQ(csv[row][0], frames[row - 1]) << "frame order";
+    for (std::size_t column = 0; column < header.size(); ++column) {
+      if (header[column] == "gpu_memory_used_mb") continue;  // NVIDIA drivers only
+      EXPECT_FALSE(csv[row][column].empty()) << "frame " << frames[row - 1] << ", " << header[column];
+    }
+    const ImageRgba8 image = read_png(out / ("frame_00" + frames[row - 1] + ".png"));
+    EXPECT_EQ(image.width, 32);
+  }
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary left behind: " << entry.path();
+}
+
+}  // namespace
+}  // namespace glint::testing
