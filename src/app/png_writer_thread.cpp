@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 
+#include <algorithm>
 #include <csignal>
 #include <exception>
 
@@ -10,8 +11,13 @@
 
 namespace glint {
 
-PngWriterThread::PngWriterThread(std::size_t max_queued) : max_queued_(max_queued == 0 ? 1 : max_queued) {
-  worker_ = std::thread([this] { work(); });
+PngWriterThread::PngWriterThread(std::size_t max_queued, std::size_t workers)
+    : max_queued_(max_queued == 0 ? 1 : max_queued) {
+  if (workers == 0) {
+    const unsigned hardware = std::thread::hardware_concurrency();
+    workers = std::clamp<std::size_t>(hardware > 1 ? hardware - 1 : 1, 1, 8);
+  }
+  for (std::size_t i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
 }
 
 PngWriterThread::~PngWriterThread() {
@@ -20,7 +26,7 @@ PngWriterThread::~PngWriterThread() {
     stopping_ = true;
   }
   changed_.notify_all();
-  worker_.join();
+  for (std::thread& worker : workers_) worker.join();
   if (error_ && !error_reported_) log_warning("{}", *error_);
 }
 
@@ -38,7 +44,7 @@ void PngWriterThread::write(std::filesystem::path path, ImageRgba8 image) {
 
 void PngWriterThread::finish() {
   std::unique_lock lock(mutex_);
-  changed_.wait(lock, [&] { return error_ || (queue_.empty() && !writing_); });
+  changed_.wait(lock, [&] { return error_ || (queue_.empty() && writing_ == 0); });
   if (error_) {
     error_reported_ = true;
     throw Error(*error_);
@@ -59,7 +65,7 @@ void PngWriterThread::work() {
     if (queue_.empty()) return;  // stopping, with every file written
     auto [path, image] = std::move(queue_.front());
     queue_.pop_front();
-    writing_ = true;
+    ++writing_;
     lock.unlock();
     changed_.notify_all();  // room in the queue
     std::optional<std::string> failure;
@@ -69,7 +75,7 @@ void PngWriterThread::work() {
       failure = error.what();
     }
     lock.lock();
-    writing_ = false;
+    --writing_;
     if (failure && !error_) error_ = std::move(failure);
     if (error_) queue_.clear();  // nothing after a failure is written
     changed_.notify_all();

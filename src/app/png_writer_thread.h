@@ -1,8 +1,8 @@
 #pragma once
-// Encodes and writes PNG files on a worker thread, so a render loop hands a frame's image over and
-// goes on with the next frame instead of spending ~70 ms per 720p frame in the encoder. The queue
-// is bounded (write() waits while it is full), so memory stays flat however far the encoder falls
-// behind. Each file is written with write_png (a temporary renamed when complete), so a run that
+// Encodes and writes PNG files on worker threads, so a render loop hands a frame's image over and
+// goes on with the next frame instead of spending 70-300 ms per 720p frame in the encoder. The
+// queue is bounded (write() waits while it is full), so memory stays flat however far the encoders
+// fall behind. Each file is written with write_png (a temporary renamed when complete), so a run that
 // stops leaves whole files only; finish() waits for every queued file.
 //
 // An error on the worker (a full disk, a folder gone) stops it: the next write() or finish() throws
@@ -22,12 +22,14 @@
 #include <string>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace glint {
 
 class PngWriterThread {
 public:
-  explicit PngWriterThread(std::size_t max_queued = 4);
+  // `workers` 0: one per hardware thread but one (the render loop's), at least one, at most 8.
+  explicit PngWriterThread(std::size_t max_queued = 4, std::size_t workers = 0);
   // Finishes the queued files (errors are only logged here: call finish() to see them).
   ~PngWriterThread();
   PngWriterThread(const PngWriterThread&) = delete;
@@ -45,11 +47,11 @@ private:
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::pair<std::filesystem::path, ImageRgba8>> queue_;
-  bool writing_ = false;  // the worker holds a file it took off the queue
+  std::size_t writing_ = 0;  // files the workers took off the queue and are writing
   bool stopping_ = false;
   std::optional<std::string> error_;  // the first failure's message
   bool error_reported_ = false;       // thrown by write() or finish(), so the destructor stays quiet
-  std::thread worker_;
+  std::vector<std::thread> workers_;
 };
 
 }  // namespace glint

