@@ -13,14 +13,16 @@
 // hit the cone is pixel_spread * (camera-to-mirror + mirror-to-hit distance) wide, and
 //   lod = log2(width * sqrt(uv area / world area) * texture size / |cos(incidence)|)
 // picks the mip level whose texel matches the cone's footprint on the triangle. The texture is
-// filtered here (trilinear, repeat wrapping, from texelFetch) rather than by textureLod: Mesa's
-// llvmpipe takes ~1 ms per filtered array sample in a compute shader, texelFetch is fast everywhere.
+// filtered here (trilinear, repeat wrapping, from texelFetch: include/trilinear_texel.glsl) rather
+// than by textureLod: Mesa's llvmpipe takes ~1 ms per filtered array sample in a compute shader,
+// texelFetch is fast everywhere.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
 #include "include/surface_point.glsl"
 #include "include/surface_lighting.glsl"
 #include "include/cube_shadow.glsl"
+#include "include/trilinear_texel.glsl"
 
 struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
 struct Hit { float t; uint instance; uint prim; float u; float v; };    // accel::Hit
@@ -46,37 +48,6 @@ uniform float slope_bias_texels;
 uniform float normal_offset_texels;
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
-
-// Bilinear sample of mip `level` of texture array layer `layer` at `uv`, wrapping (GL_REPEAT).
-vec3 bilinear_texel(int layer, vec2 uv, int level) {
-  // The level's size from level 0's rather than textureSize(material_textures, level): llvmpipe
-  // answers a size query for one lane's level in every lane of the SIMD group, and the lanes of a
-  // group hold rays in a run-dependent order, so frames differed from run to run
-  // (docs/reliability.md, "Deterministic frames").
-  const ivec2 size = max(textureSize(material_textures, 0).xy >> level, ivec2(1));
-  const vec2 position = uv * vec2(size) - 0.5;
-  const ivec2 base = ivec2(floor(position));
-  const vec2 f = position - vec2(base);
-  vec3 row[2];
-  for (int dy = 0; dy < 2; ++dy) {
-    const int y = ((base.y + dy) % size.y + size.y) % size.y;
-    const vec3 left = texelFetch(material_textures, ivec3((base.x % size.x + size.x) % size.x, y, layer), level).rgb;
-    const vec3 right = texelFetch(material_textures, ivec3(((base.x + 1) % size.x + size.x) % size.x, y, layer), level).rgb;
-    row[dy] = mix(left, right, f.x);
-  }
-  return mix(row[0], row[1], f.y);
-}
-
-// Trilinear: the two mip levels around `lod`, blended.
-vec3 trilinear_texel(int layer, vec2 uv, float lod) {
-  const float top = float(textureQueryLevels(material_textures) - 1);
-  const float clamped = clamp(lod, 0.0, top);
-  const int lower = int(floor(clamped));
-  const float blend = clamped - float(lower);
-  const vec3 a = bilinear_texel(layer, uv, lower);
-  if (blend <= 0.0) return a;
-  return mix(a, bilinear_texel(layer, uv, min(lower + 1, int(top))), blend);
-}
 
 float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, float t) {
   const float world_area = length(cross(e1, e2));
@@ -111,7 +82,7 @@ void main() {
   if (material.texture_layer >= 0) {
     const float lod = texture_lod(triangle.position[1] - triangle.position[0], triangle.position[2] - triangle.position[0],
                                   triangle.uv[1] - triangle.uv[0], triangle.uv[2] - triangle.uv[0], normal, ray, hit.t);
-    albedo *= trilinear_texel(material.texture_layer, surface.uv, lod);
+    albedo *= trilinear_texel(material_textures, material.texture_layer, surface.uv, lod);
   }
 
   const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, near_distance, texel_angle,

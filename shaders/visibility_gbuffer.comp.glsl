@@ -15,11 +15,13 @@
 // 2x2 pixel quad (differences of the interpolated uv between neighbouring pixel centres, on the
 // triangle's plane even outside it). The same differences are computed here from the barycentrics
 // of the quad's pixel centres and handed to textureGrad, so the sampler (trilinear, anisotropic)
-// filters the same footprint.
+// filters the same footprint. With filter_in_shader, the GL specification's isotropic level
+// log2(max(|d uv/dx|, |d uv/dy|) x layer size) is filtered trilinearly instead.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
 #include "include/surface_point.glsl"
+#include "include/trilinear_texel.glsl"
 
 layout(binding = 0, rg32ui) uniform readonly uimage2D visibility_ids;
 layout(binding = 1, rgba8) uniform writeonly image2D albedo_reflectivity;
@@ -27,6 +29,10 @@ layout(binding = 2, rgba32f) uniform writeonly image2D world_position;
 layout(binding = 3, rgba16f) uniform writeonly image2D world_normal_roughness;
 layout(binding = 4, r32ui) uniform writeonly uimage2D material_id;
 layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
+// Set on Mesa's software renderers (VisibilityGBufferPass): filter with trilinear_texel instead of
+// textureGrad, which llvmpipe runs about 60x slower in a compute shader than the whole raster
+// G-buffer, and without the anisotropic filter its fragment shaders use anyway.
+uniform bool filter_in_shader;
 
 // Weights (of corners 0, 1, 2) of the point of the triangle with clip-space corners `clip` that
 // projects to `ndc`; (1/3, 1/3, 1/3) for a triangle seen edge-on (the rasteriser covers no pixel
@@ -74,7 +80,14 @@ void main() {
     const vec2 uv00 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad)));
     const vec2 uv10 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad + ivec2(1, 0))));
     const vec2 uv01 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad + ivec2(0, 1))));
-    albedo *= textureGrad(material_textures, vec3(surface.uv, float(material.texture_layer)), uv10 - uv00, uv01 - uv00).rgb;
+    const vec2 ddx = uv10 - uv00, ddy = uv01 - uv00;
+    if (filter_in_shader) {
+      const float size = float(textureSize(material_textures, 0).x);  // layers are square
+      const float lod = log2(max(max(length(ddx), length(ddy)) * size, 1e-8));
+      albedo *= trilinear_texel(material_textures, material.texture_layer, surface.uv, lod);
+    } else {
+      albedo *= textureGrad(material_textures, vec3(surface.uv, float(material.texture_layer)), ddx, ddy).rgb;
+    }
   }
   imageStore(albedo_reflectivity, pixel, vec4(albedo, material.reflectivity));
   imageStore(world_position, pixel, vec4(surface.position, 1.0));

@@ -3,7 +3,8 @@
 // rebuilds what GBufferPass would have written there from the pixel's {instance, triangle} id and
 // the GpuScene buffers (shaders/visibility_gbuffer.comp.glsl: perspective-correct barycentrics of
 // the pixel centre, surface_point() shared with hit shading, texture LOD from the uv differences
-// across the pixel's 2x2 quad as the raster path's sampler takes them).
+// across the pixel's 2x2 quad as the raster path's sampler takes them, through textureGrad; on
+// Mesa's software renderers, where that is ~60x slower, filtered trilinearly in the shader).
 //   inputs:  RasterTargets visibility_id (VisibilityIdPass), GpuScene, FrameConstants UBO
 //   outputs: RasterTargets albedo_reflectivity, world_position, world_normal_roughness, material_id
 //            (formats and meanings of GBufferPass; depth is VisibilityIdPass's)

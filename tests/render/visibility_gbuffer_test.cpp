@@ -201,8 +201,8 @@ Mismatches compare(const Scene& scene, const GBufferImages& raster, const GBuffe
   return m;
 }
 
-// Whether GL_RENDERER is Mesa's software rasteriser, whose compute-shader sampler filters differently
-// from its fragment-shader one (see expect_equal_gbuffers).
+// Whether GL_RENDERER is Mesa's software rasteriser, where VisibilityGBufferPass filters textures in
+// the shader (see expect_equal_gbuffers).
 bool software_sampler(const HeadlessGlContext& context) {
   return context.renderer().find("llvmpipe") != std::string::npos ||
          context.renderer().find("softpipe") != std::string::npos;
@@ -214,15 +214,14 @@ bool software_sampler(const HeadlessGlContext& context) {
 //   anisotropic) samples the same footprint; differences come from float rounding and from drivers
 //   that take per-pixel (fine) rather than per-quad derivatives: mean <= 1.5/255 and at most 5% of
 //   the textured pixels off by more than 2/255 (not yet measured on a GPU: the lead's H100 run).
-// - llvmpipe (Mesa 22.3.6) filters anisotropic footprints with its elliptical filter in fragment
-//   shaders only; its compute-shader textureGrad is trilinear (measured 2026-11-25: a head-on
-//   minified quad differs from the raster albedo by a mean 28/255 with the computed LOD and with
-//   every fixed LOD from 0 to 2 alike). So only gross errors are caught there: mean <= 40/255
-//   (measured up to 27/255 on the grazing floor of the instanced scene; sampling the wrong place of
-//   the texture gave 82/255). Uv interpolation itself is checked on every driver by
-//   TexturedQuadFacingTheCameraMatchesInsideTexelBlocks, where the filters agree.
+// - On llvmpipe the pass filters trilinearly in the shader (isotropic), while llvmpipe's fragment
+//   shaders use its anisotropic (elliptical) filter, which no compute-shader sampling reproduces
+//   (its compute textureGrad is trilinear too). Measured 2026-11-25 (Mesa 22.3.6): mean 3-4/255 on
+//   the atrium, 17/255 on the instanced scene's floor at grazing angles; bound 24/255, which still
+//   catches sampling the wrong place of a texture (over 80/255). Uv interpolation itself is checked
+//   on every driver by TexturedQuadFacingTheCameraMatchesInsideTexelBlocks, where filters agree.
 constexpr double kGpuMeanTexturedError = 1.5 / 255.0;
-constexpr double kLlvmpipeMeanTexturedError = 40.0 / 255.0;
+constexpr double kLlvmpipeMeanTexturedError = 24.0 / 255.0;
 
 void expect_equal_gbuffers(const Mismatches& m, int expected_geometry, bool software) {
   EXPECT_GE(m.geometry, expected_geometry);
@@ -365,11 +364,11 @@ TEST_F(VisibilityGBuffer, TexturedQuadFacingTheCameraMatchesInsideTexelBlocks) {
 
 // A whole frame (raster, shadow, lighting, SSR, rays for SSR's failures, resolve) with each method.
 // The G-buffers differ only in textured albedo (see expect_equal_gbuffers) and in normals by
-// half-float rounding, so the final images are nearly equal. Bounds: on llvmpipe PSNR >= 24 dB
-// (measured 27.9 dB, 2026-11-25: the two samplers' filters on textured surfaces, amplified nowhere
-// else; the golden image test's bound); on a GPU, where the G-buffers agree to a rounding step,
-// PSNR >= 35 dB (not yet measured). Swapped barycentrics (positions, normals and uvs rebuilt at the
-// wrong points) give 21.7 dB on llvmpipe, and fail every other test here.
+// half-float rounding, so the final images are nearly equal: PSNR >= 30 dB on llvmpipe (measured
+// 35.1 dB, 2026-11-25: its two texture filters on textured surfaces, see expect_equal_gbuffers) and
+// >= 35 dB on a GPU, where the G-buffers agree to a rounding step (not yet measured). Swapped
+// barycentrics (positions, normals and uvs rebuilt at the wrong points) gave 21.7 dB on llvmpipe,
+// and fail every other test here.
 TEST_F(VisibilityGBuffer, FrameRenderedWithEitherMethodIsNearlyTheSame) {
   Scene scene = make_preset("atrium-simple");
   const WalkthroughAnimation animation(scene);
@@ -384,7 +383,7 @@ TEST_F(VisibilityGBuffer, FrameRenderedWithEitherMethodIsNearlyTheSame) {
   const ImageRgba8 visibility = render_final(GBufferMethod::visibility);
   const metrics::RmsePsnr difference = metrics::rmse_psnr(visibility, raster);
   std::printf("[ visibility ] final frame: PSNR %.2f dB against the raster G-buffer's\n", difference.psnr);
-  EXPECT_GE(difference.psnr, software_sampler(context()) ? 24.0 : 35.0);
+  EXPECT_GE(difference.psnr, software_sampler(context()) ? 30.0 : 35.0);
 }
 
 TEST(VisibilityGBufferSettings, MethodNamesRoundTripAndUnknownOnesAreErrors) {
