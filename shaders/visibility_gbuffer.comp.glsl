@@ -1,96 +1,13 @@
 #version 450 core
-// Visibility G-buffer, resolve (VisibilityGBufferPass, docs/render.md): one invocation per pixel
-// turns the pixel's {instance + 1, triangle} id (visibility.frag.glsl) into every G-buffer image
-// GBufferPass writes, texel for texel the same: albedo + reflectivity, world position (w = 1),
-// authored normal + roughness, material index + 1; background pixels (id 0) get 0 everywhere.
-//
-// Barycentrics: the perspective-correct weights of the pixel centre, which is what the rasteriser
-// interpolates varyings with. The triangle's corners go through the same transform as gl_Position
-// (view_projection * world); a point sum(b_i c_i) of the clip-space triangle projects to the NDC
-// point p when sum(b_i (x_i - p.x w_i)) = 0 and sum(b_i (y_i - p.y w_i)) = 0, so b is the cross
-// product of those two vectors, normalised to sum 1 (no division by w: corners behind the camera
-// are fine). surface_point() (include/surface_point.glsl, shared with hit shading) does the rest.
-//
-// Texture level of detail: the raster path's texture() takes the uv's screen derivatives from the
-// 2x2 pixel quad (differences of the interpolated uv between neighbouring pixel centres, on the
-// triangle's plane even outside it). The same differences are computed here from the barycentrics
-// of the quad's pixel centres and handed to textureGrad, so the sampler (trilinear, anisotropic)
-// filters the same footprint. With filter_in_shader, the GL specification's isotropic level
-// log2(max(|d uv/dx|, |d uv/dy|) x layer size) is filtered trilinearly instead.
+// Visibility G-buffer, resolve (VisibilityGBufferPass) on GPUs: the sampler filters the uv
+// footprint of the pixel's quad with textureGrad, exactly what the raster G-buffer's texture() does
+// with its implicit derivatives (trilinear, anisotropic). Body: include/visibility_gbuffer_main.glsl.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-#include "include/frame_constants.glsl"
-#include "include/surface_point.glsl"
-#include "include/trilinear_texel.glsl"
-
-layout(binding = 0, rg32ui) uniform readonly uimage2D visibility_ids;
-layout(binding = 1, rgba8) uniform writeonly image2D albedo_reflectivity;
-layout(binding = 2, rgba32f) uniform writeonly image2D world_position;
-layout(binding = 3, rgba16f) uniform writeonly image2D world_normal_roughness;
-layout(binding = 4, r32ui) uniform writeonly uimage2D material_id;
 layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
-// Set on Mesa's software renderers (VisibilityGBufferPass): filter with trilinear_texel instead of
-// textureGrad, which llvmpipe runs about 60x slower in a compute shader than the whole raster
-// G-buffer, and without the anisotropic filter its fragment shaders use anyway.
-uniform bool filter_in_shader;
 
-// Weights (of corners 0, 1, 2) of the point of the triangle with clip-space corners `clip` that
-// projects to `ndc`; (1/3, 1/3, 1/3) for a triangle seen edge-on (the rasteriser covers no pixel
-// centre of such a triangle).
-vec3 perspective_barycentrics(vec4 clip[3], vec2 ndc) {
-  const vec3 x = vec3(clip[0].x - ndc.x * clip[0].w, clip[1].x - ndc.x * clip[1].w, clip[2].x - ndc.x * clip[2].w);
-  const vec3 y = vec3(clip[0].y - ndc.y * clip[0].w, clip[1].y - ndc.y * clip[1].w, clip[2].y - ndc.y * clip[2].w);
-  const vec3 k = cross(x, y);
-  const float sum = k.x + k.y + k.z;
-  return sum != 0.0 ? k / sum : vec3(1.0 / 3.0);
+vec3 material_texel(int layer, vec2 uv, vec2 ddx, vec2 ddy) {
+  return textureGrad(material_textures, vec3(uv, float(layer)), ddx, ddy).rgb;
 }
 
-// NDC of pixel `pixel`'s centre.
-vec2 pixel_ndc(ivec2 pixel) { return (vec2(pixel) + 0.5) / vec2(viewport.xy) * 2.0 - 1.0; }
-
-vec2 interpolate_uv(SceneTriangle triangle, vec3 weights) {
-  return weights.x * triangle.uv[0] + weights.y * triangle.uv[1] + weights.z * triangle.uv[2];
-}
-
-void main() {
-  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, viewport.xy))) return;
-  const uvec2 id = imageLoad(visibility_ids, pixel).xy;
-  if (id.x == 0u) {
-    imageStore(albedo_reflectivity, pixel, vec4(0.0));
-    imageStore(world_position, pixel, vec4(0.0));
-    imageStore(world_normal_roughness, pixel, vec4(0.0));
-    imageStore(material_id, pixel, uvec4(0u));
-    return;
-  }
-
-  const SceneTriangle triangle = scene_triangle(id.x - 1u, id.y);
-  vec4 clip[3];
-  for (int i = 0; i < 3; ++i) clip[i] = view_projection * vec4(triangle.position[i], 1.0);
-  const vec3 weights = perspective_barycentrics(clip, pixel_ndc(pixel));
-  const SurfacePoint surface = surface_point(triangle, weights.yz);
-
-  const GpuMaterial material = materials[surface.material];
-  vec3 albedo = material.diffuse.rgb;
-  if (material.texture_layer >= 0) {
-    // The quad's uv differences: right minus left neighbour and top minus bottom, in the quad's
-    // first row and column (llvmpipe's quad-wide derivatives; NVIDIA's differ from them only in
-    // which row or column of the quad they take).
-    const ivec2 quad = pixel & ~1;
-    const vec2 uv00 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad)));
-    const vec2 uv10 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad + ivec2(1, 0))));
-    const vec2 uv01 = interpolate_uv(triangle, perspective_barycentrics(clip, pixel_ndc(quad + ivec2(0, 1))));
-    const vec2 ddx = uv10 - uv00, ddy = uv01 - uv00;
-    if (filter_in_shader) {
-      const float size = float(textureSize(material_textures, 0).x);  // layers are square
-      const float lod = log2(max(max(length(ddx), length(ddy)) * size, 1e-8));
-      albedo *= trilinear_texel(material_textures, material.texture_layer, surface.uv, lod);
-    } else {
-      albedo *= textureGrad(material_textures, vec3(surface.uv, float(material.texture_layer)), ddx, ddy).rgb;
-    }
-  }
-  imageStore(albedo_reflectivity, pixel, vec4(albedo, material.reflectivity));
-  imageStore(world_position, pixel, vec4(surface.position, 1.0));
-  imageStore(world_normal_roughness, pixel, vec4(surface.normal, material.roughness));
-  imageStore(material_id, pixel, uvec4(surface.material + 1u));
-}
+#include "include/visibility_gbuffer_main.glsl"

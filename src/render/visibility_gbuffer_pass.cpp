@@ -19,7 +19,8 @@ constexpr GLuint kNormalUnit = 3;
 constexpr GLuint kMaterialIdUnit = 4;
 
 // Mesa's software rasterisers: their compute-shader textureGrad is ~60x slower than the whole raster
-// G-buffer (docs/render.md, "Visibility G-buffer"), so the shader filters from texelFetch there.
+// G-buffer (docs/render.md, "Visibility G-buffer"), so a shader that filters from texelFetch runs
+// there.
 bool software_renderer() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string_view name = renderer != nullptr ? renderer : "";
@@ -29,9 +30,10 @@ bool software_renderer() {
 }  // namespace
 
 VisibilityGBufferPass::VisibilityGBufferPass(const RasterTargets& targets)
-    : targets_(&targets), program_(ShaderProgram::from_embedded({"visibility_gbuffer.comp.glsl"})) {
+    : targets_(&targets),
+      program_(ShaderProgram::from_embedded({software_renderer() ? "visibility_gbuffer_texel_fetch.comp.glsl"
+                                                                 : "visibility_gbuffer.comp.glsl"})) {
   if (targets.visibility_id.id() == 0) fail("visibility G-buffer pass: the raster targets have no visibility id image");
-  program_.set_uniform("filter_in_shader", software_renderer() ? 1 : 0);
   check_gl("visibility G-buffer pass set-up");
 }
 

@@ -4,6 +4,7 @@
 // the same surface at every pixel: depth and material ids must be equal exactly, and the id of each
 // pixel must name the triangle the raster G-buffer's position lies on.
 #include "gl/gl_test_context.h"
+#include "gl/shader_program.h"
 #include "metrics/rmse_psnr.h"
 #include "raster_test_scene.h"
 #include "render/frame_pipeline.h"
@@ -384,6 +385,13 @@ TEST_F(VisibilityGBuffer, FrameRenderedWithEitherMethodIsNearlyTheSame) {
   const metrics::RmsePsnr difference = metrics::rmse_psnr(visibility, raster);
   std::printf("[ visibility ] final frame: PSNR %.2f dB against the raster G-buffer's\n", difference.psnr);
   EXPECT_GE(difference.psnr, software_sampler(context()) ? 30.0 : 35.0);
+}
+
+// The pass picks one of two programs by driver (textureGrad on GPUs, a filter in the shader on
+// llvmpipe); both must compile wherever the tests run, so a CPU machine catches a broken GPU one.
+TEST_F(VisibilityGBuffer, BothResolveProgramsCompile) {
+  EXPECT_NE(ShaderProgram::from_embedded({"visibility_gbuffer.comp.glsl"}).id(), 0u);
+  EXPECT_NE(ShaderProgram::from_embedded({"visibility_gbuffer_texel_fetch.comp.glsl"}).id(), 0u);
 }
 
 TEST(VisibilityGBufferSettings, MethodNamesRoundTripAndUnknownOnesAreErrors) {
