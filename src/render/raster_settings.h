@@ -20,8 +20,9 @@ ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
 //   raster      one draw whose fragment shader interpolates, samples textures and writes every image
 //   visibility  one draw writing only depth and a {instance, triangle} id, then one compute pass that
 //               rebuilds every image from the ids and the scene buffers (docs/render.md)
-// raster stays the default until the visibility buffer is measured faster on the H100 (on llvmpipe
-// it is not: docs/render.md, "Visibility G-buffer").
+// raster stays the default until both are measured on the H100 (on llvmpipe the visibility buffer
+// took 40 ms against 64 ms at 320x180, with its own texture filter there: docs/render.md,
+// "Visibility G-buffer").
 enum class GBufferMethod { raster, visibility };
 
 // "raster", "visibility"; parse_gbuffer_method is the inverse (glint::Error naming the known ones).
