@@ -368,7 +368,7 @@ TEST_F(VisibilityGBuffer, TexturedQuadFacingTheCameraMatchesInsideTexelBlocks) {
 // half-float rounding, so the final images are nearly equal: PSNR >= 30 dB on llvmpipe (measured
 // 35.1 dB, 2026-11-25: its two texture filters on textured surfaces, see expect_equal_gbuffers) and
 // >= 35 dB on a GPU, where the G-buffers agree to a rounding step (not yet measured). Swapped
-// barycentrics (positions, normals and uvs rebuilt at the wrong points) gave 21.7 dB on llvmpipe,
+// barycentrics (positions, normals and uvs rebuilt at the wrong points) gave 22.9 dB on llvmpipe,
 // and fail every other test here.
 TEST_F(VisibilityGBuffer, FrameRenderedWithEitherMethodIsNearlyTheSame) {
   Scene scene = make_preset("atrium-simple");
