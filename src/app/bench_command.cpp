@@ -69,7 +69,8 @@ nlohmann::json run_settings(const BenchOptions& options) {
   return {{"experiment", options.experiment}, {"scene", options.scene},     {"simple_scene", options.simple_scene},
           {"width", options.width},           {"height", options.height},   {"frames", options.frames},
           {"stride", options.stride},         {"warmup_frames", options.warmup},
-          {"shadow_map_size", options.shadow_map_size}, {"gbuffer", options.gbuffer}};
+          {"shadow_map_size", options.shadow_map_size}, {"gbuffer", options.gbuffer},
+          {"shadows", options.shadows}};
 }
 
 std::vector<bench::RowKey> expected_rows(const PlannedCell& planned) {
@@ -216,6 +217,10 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
   command->add_option("--gbuffer", options.gbuffer, "How the G-buffer is made: raster or visibility (as glint render)")
       ->check(CLI::IsMember({"raster", "visibility"}))
       ->capture_default_str();
+  command
+      ->add_option("--shadows", options.shadows, "How the light's shadow is made: cube, rt or hybrid (as glint render)")
+      ->check(CLI::IsMember({"cube", "rt", "hybrid"}))
+      ->capture_default_str();
   command->add_flag("--quick", options.quick,
                     "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple (flags given "
                     "explicitly still apply)");
@@ -271,7 +276,7 @@ int run_bench_command(const BenchOptions& given_options) {
   bench::write_run_settings(out, settings);
   HeadlessGlContext context;
   const bench::CellRunSettings cell_settings{options.width, options.height, options.warmup, options.shadow_map_size,
-                                             options.command_line, options.gbuffer};
+                                             options.command_line, options.gbuffer, options.shadows};
   std::size_t ticks = 0;
   for (const PlannedCell& planned : cells)
     if (planned.to_run) ticks += bench::cell_ticks(planned.cell, planned.frames.size(), cell_settings);

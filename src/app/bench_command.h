@@ -26,6 +26,7 @@ struct BenchOptions {
   int interval = 10;                               // measured frames per interval mean
   int shadow_map_size = 1024;
   std::string gbuffer = "raster";                  // raster|visibility, as glint render --gbuffer
+  std::string shadows = "cube";                    // cube|rt|hybrid, as glint render --shadows
   bool quick = false;   // smoke run: tiny resolution, few frames, cpu backend, atrium-simple
   bool no_plot = false;
   std::string out;

@@ -57,6 +57,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.raster.shadow_map_size = options.shadow_map_size;
   settings.raster.shadow_cube_draw = render::parse_shadow_cube_draw(options.shadow_cube_draw);
   settings.raster.gbuffer = render::parse_gbuffer_method(options.gbuffer);
+  settings.shadows.method = render::parse_shadow_method(options.shadows);
   settings.ssr.max_steps = options.ssr_max_steps;
   settings.ssr.thickness = options.ssr_thickness;
   settings.ssr.confidence_threshold = options.ssr_confidence;
@@ -81,13 +82,13 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
   // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
   // references cannot be refitted.
-  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && options.backend != "embree" &&
+  if (render::uses_ray_tracer(settings) && options.deform == "on" && options.backend != "embree" &&
       settings.ray_tracing.accel.builder == accel::BvhBuilder::sbvh &&
       settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
     fail("--accel sbvh cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
          "or --deform off",
          options.update);
-  if (render::uses_ray_tracing(settings.reflections) && options.deform == "on" && deforms_on_gpu(options) &&
+  if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
       !rt::is_gpu_backend(options.backend))
     fail("--deform-on gpu needs --backend cuda or optix when reflections are ray traced (the {} backend builds from host "
          "vertices); use --deform-on cpu",
@@ -256,6 +257,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                    "triangle ids, then a compute pass rebuilds the images); same images (docs/render.md)")
       ->check(CLI::IsMember({"raster", "visibility"}))
       ->capture_default_str();
+  command
+      ->add_option("--shadows", options.shadows,
+                   "How the light's shadow is made: cube (the cube map, the paper's method), rt (a shadow ray per "
+                   "lit pixel through --backend) or hybrid (the cube map at half --shadow-map-size, rays where it is "
+                   "uncertain); docs/render.md")
+      ->check(CLI::IsMember({"cube", "rt", "hybrid"}))
+      ->capture_default_str();
   command->add_option("--ssr-max-steps", options.ssr_max_steps, "Most screen-space march steps per pixel")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
@@ -304,7 +312,7 @@ int run_render_command(const RenderOptions& options) {
   }
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
-  if (render::uses_ray_tracing(settings.reflections)) {
+  if (render::uses_ray_tracer(settings)) {
     rt::check_backend_built(options.backend);
     if (rt::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
   }

@@ -6,6 +6,8 @@
 #include "render/render_targets.h"
 #include "render/texture_readback.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 
 namespace glint::render {
@@ -28,6 +30,18 @@ const FramePipelineSettings& validated(const FramePipelineSettings& settings) {
   return settings;
 }
 
+// hybrid shadows draw the cube map at their own, reduced size.
+RasterSettings raster_settings(const FramePipelineSettings& settings) {
+  RasterSettings raster = settings.raster;
+  if (settings.shadows.method == ShadowMethod::hybrid)
+    raster.shadow_map_size = std::max(1, raster.shadow_map_size / settings.shadows.hybrid_cube_divisor);
+  return raster;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 // The part of a reflection image where the failure mask is `keep` (1: traced, 0: SSR), the rest 0.
 ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float keep) {
   for (std::size_t i = 0; i < reflection.pixels.size(); ++i)
@@ -37,20 +51,29 @@ ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float k
 
 }  // namespace
 
+bool uses_ray_tracer(const FramePipelineSettings& settings) {
+  return uses_ray_tracing(settings.reflections) || settings.shadows.method != ShadowMethod::cube;
+}
+
 void FramePipelineSettings::validate() const {
   raster.validate();
   render::validate(ssr);
   render::validate(resolve);
-  if (uses_ray_tracing(reflections)) ray_tracing.validate();
+  shadows.validate();
+  if (uses_ray_tracer(*this)) ray_tracing.validate();
 }
 
 FramePipeline::FramePipeline(const Scene& scene, int width, int height, const FramePipelineSettings& settings)
     : scene_(&scene),
       settings_(validated(settings)),
-      raster_(scene, width, height, settings.raster),
+      raster_(scene, width, height, raster_settings(settings_)),
       resolve_(width, height, settings.resolve) {
   if (uses_ssr(settings_.reflections)) ssr_.emplace(width, height, settings_.ssr);
-  if (uses_ray_tracing(settings_.reflections)) ray_traced_.emplace(scene, width, height, settings_.ray_tracing);
+  if (uses_ray_tracer(settings_)) tracer_ = build_ray_tracer(scene, settings_.ray_tracing);
+  if (uses_ray_tracing(settings_.reflections)) ray_traced_.emplace(scene, width, height, settings_.ray_tracing, *tracer_);
+  if (settings_.shadows.method != ShadowMethod::cube)
+    shadow_rays_.emplace(scene, width, height, settings_.shadows.method, *tracer_,
+                         settings_.ray_tracing.origin_offset_fraction, settings_.shadows.hybrid_depth_edge_fraction);
   if (!ssr_) {
     own_reflection_ = make_reflection_image(width, height);
     clear_reflection(own_reflection_.id());
@@ -63,20 +86,35 @@ void FramePipeline::upload_meshes(std::span<const std::uint32_t> dirty_meshes) {
 }
 
 double FramePipeline::update_ray_tracer(std::span<const std::uint32_t> dirty_meshes) {
-  if (!ray_traced_ || dirty_meshes.empty()) return 0.0;
-  return ray_traced_->update_meshes(*scene_, dirty_meshes);
+  if (!tracer_ || dirty_meshes.empty()) return 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  tracer_->update(*scene_, dirty_meshes, settings_.ray_tracing.update);
+  return milliseconds_since(start);
 }
 
 double FramePipeline::update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes) {
-  if (!ray_traced_ || dirty_meshes.empty()) return 0.0;
-  return ray_traced_->update_meshes_on_device(dirty_meshes);
+  if (!tracer_ || dirty_meshes.empty()) return 0.0;
+  rt::DeviceTracing* device = tracer_->device_tracing();
+  if (device == nullptr) fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
+  const auto start = std::chrono::steady_clock::now();
+  device->update_device(dirty_meshes, settings_.ray_tracing.update);
+  return milliseconds_since(start);
 }
 
 GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection() : own_reflection_.id(); }
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   const auto slot = static_cast<std::size_t>(frames_rendered_ % kFramesInFlight);
-  raster_.render(frame, timer);
+  RasterShadowSteps shadow;
+  if (shadow_rays_) {
+    // rt shadows skip the cube map unless ray-traced reflection hits still look their shadow up in it.
+    shadow.cube = settings_.shadows.method == ShadowMethod::hybrid || ray_traced_.has_value();
+    shadow.after_cube = [&] {
+      if (ray_traced_) ray_traced_->collect_trace_time();  // before the shared tracer's events are reused
+      shadow_rays_->run(raster_);
+    };
+  }
+  raster_.render(frame, timer, shadow);
   if (ssr_) {
     run_timed_pass(timer, "ssr", [&] {
       ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),

@@ -21,9 +21,11 @@
 #include "render/raster_pipeline.h"
 #include "render/raster_settings.h"
 #include "render/ray_traced_reflections.h"
+#include "render/ray_traced_shadows.h"
 #include "render/reflection_mode.h"
 #include "render/resolve_pass.h"
 #include "render/resolve_settings.h"
+#include "render/shadow_method.h"
 #include "render/ssr_pass.h"
 #include "render/ssr_settings.h"
 #include "scene/camera_path.h"
@@ -31,6 +33,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -49,10 +52,14 @@ struct FramePipelineSettings {
   RasterSettings raster;
   SsrSettings ssr;
   ResolveSettings resolve;
-  RayTracingSettings ray_tracing;  // hybrid and rt only
+  RayTracingSettings ray_tracing;  // hybrid and rt reflections, rt and hybrid shadows
+  ShadowSettings shadows;          // cube (default), rt or hybrid
 
   void validate() const;  // throws glint::Error naming the first bad setting
 };
+
+// Whether the settings need a ray tracer: hybrid or rt reflections, or rt or hybrid shadows.
+bool uses_ray_tracer(const FramePipelineSettings& settings);
 
 // What a frame counted (and, with final capture, its final image), read back after the GPU finished it.
 struct FrameReadback {
@@ -70,7 +77,8 @@ struct DebugView {
 class FramePipeline {
 public:
   // Uploads `scene` (which must outlive the pipeline, see RasterPipeline), compiles every pass and,
-  // in hybrid and rt modes, builds the ray tracer's structures. Needs a current GL context.
+  // in hybrid and rt reflection modes or with rt and hybrid shadows, builds the one ray tracer both
+  // use. Needs a current GL context.
   FramePipeline(const Scene& scene, int width, int height, const FramePipelineSettings& settings = {});
 
   // After the vertices of `dirty_meshes` moved in the scene (SceneDeformers::apply's list): copies
@@ -103,10 +111,13 @@ public:
   // Rays traced and the trace time of the last frame; nullopt without ray tracing or before the
   // first frame. With a GPU backend, waits for the frame's GPU work.
   std::optional<RayTraceFrameStats> ray_trace_stats();
-  // The ray tracer (hybrid and rt modes), for its build/update statistics; null otherwise.
-  const rt::RayTracer* ray_tracer() const { return ray_traced_ ? &ray_traced_->tracer() : nullptr; }
+  // The ray tracer (hybrid and rt reflections, rt and hybrid shadows), for its build/update
+  // statistics; null otherwise.
+  const rt::RayTracer* ray_tracer() const { return tracer_.get(); }
   // A GPU ray tracer's device side (for a GPU deformer); null with a CPU backend or no ray tracing.
-  rt::DeviceTracing* device_tracing() { return ray_traced_ ? ray_traced_->device_tracing() : nullptr; }
+  rt::DeviceTracing* device_tracing() { return tracer_ ? tracer_->device_tracing() : nullptr; }
+  // The shadow rays (rt and hybrid shadows), for tests; null with cube shadows.
+  const RayTracedShadows* shadow_rays() const { return shadow_rays_ ? &*shadow_rays_ : nullptr; }
   // albedo, normals, positions, depth, shadow mask; with SSR its reflection and failure mask; with ray
   // tracing the traced reflection; with both the combined reflection. Waits for the GPU; see
   // debug_views.h for how each is made viewable.
@@ -125,7 +136,9 @@ private:
   FramePipelineSettings settings_;
   RasterPipeline raster_;
   std::optional<SsrPass> ssr_;
+  std::unique_ptr<rt::RayTracer> tracer_;  // shared by ray_traced_ and shadow_rays_
   std::optional<RayTracedReflections> ray_traced_;
+  std::optional<RayTracedShadows> shadow_rays_;
   ResolvePass resolve_;
   // The reflection image when SSR does not make one: all zero (off), or cleared and filled by the
   // ray tracer every frame (rt). In hybrid the ray tracer fills SSR's failed pixels instead.

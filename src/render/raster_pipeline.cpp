@@ -44,7 +44,7 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
   check_gl("raster pipeline set-up");
 }
 
-void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
+void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const RasterShadowSteps& shadow) {
   // The scene's bounds scan every vertex (deforming meshes move them): once per frame, for both the
   // camera's clip range and the shadow cube's near distance.
   const Aabb world_bounds = scene_->world_bounds();
@@ -63,8 +63,11 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer) {
   }
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
-  shadow_cube_.run(gpu_scene_, frame.light_position, world_bounds, shadow_chunks_ ? &*shadow_chunks_ : nullptr);
-  shadow_mask_.run(shadow_cube_, settings_);
+  if (shadow.cube) {
+    shadow_cube_.run(gpu_scene_, frame.light_position, world_bounds, shadow_chunks_ ? &*shadow_chunks_ : nullptr);
+    shadow_mask_.run(shadow_cube_, settings_);
+  }
+  if (shadow.after_cube) shadow.after_cube();
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "light");
   lighting_.run(gpu_scene_, settings_);

@@ -25,12 +25,21 @@
 #include "scene/camera_path.h"
 #include "scene/scene.h"
 
+#include <functional>
 #include <optional>
 
 namespace glint::render {
 
 // Every image the pipeline writes, for readback and debug views.
 enum class RasterOutput { AlbedoReflectivity, WorldPosition, WorldNormalRoughness, MaterialId, Depth, ShadowMask, Lit };
+
+// How RasterPipeline::render makes the shadow mask (ShadowMethod): the cube map and its PCF mask
+// (cube, and hybrid's first half), then `after_cube` (the shadow rays of rt and hybrid:
+// RayTracedShadows), both inside the "shadow" timing.
+struct RasterShadowSteps {
+  bool cube = true;
+  std::function<void()> after_cube;
+};
 
 class RasterPipeline {
 public:
@@ -41,7 +50,7 @@ public:
   // G-buffer, then shadow (cube map + mask, which needs this frame's G-buffer), then lighting. With
   // a timer (inside its begin_frame/end_frame) the passes are timed as "gbuffer" (with the
   // visibility method: the id draw and the compute resolve together), "shadow", "light".
-  void render(const FrameState& frame, GpuTimer* timer = nullptr);
+  void render(const FrameState& frame, GpuTimer* timer = nullptr, const RasterShadowSteps& shadow = {});
 
   GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
   GLuint world_position() const { return targets_.world_position.id(); }

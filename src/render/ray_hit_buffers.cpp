@@ -2,35 +2,24 @@
 
 #include "core/error.h"
 #include "gl/gl_check.h"
+#include "render/persistent_buffer.h"
 #include "render/render_targets.h"
 
 #include <array>
 #include <cstring>
 
 namespace glint::render {
-namespace {
-
-constexpr GLbitfield kPersistent = GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-
-// A buffer with immutable storage mapped for the whole of its life (unmapped when deleted).
-// GL_CLIENT_STORAGE_BIT asks for host memory: the CPU touches every byte each frame.
-GlBuffer create_mapped_buffer(std::size_t bytes, GLbitfield access, void** mapped, const char* what) {
-  GlBuffer buffer = create_buffer(bytes, nullptr, access | kPersistent | GL_CLIENT_STORAGE_BIT);
-  *mapped = glMapNamedBufferRange(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), access | kPersistent);
-  if (*mapped == nullptr) fail("ray buffers: could not map the {} buffer ({} bytes) persistently", what, bytes);
-  return buffer;
-}
-
-}  // namespace
 
 RayHitBuffers::RayHitBuffers(std::size_t capacity, RayHitMemory memory)
     : capacity_(capacity), memory_(memory), counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ray counters") {
   if (capacity == 0) fail("ray buffers: capacity must be at least one ray");
   void* mapped = nullptr;
   if (memory == RayHitMemory::host_mapped) {
-    rays_ = create_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped, "ray");
+    rays_ = create_persistently_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped,
+                                              "ray buffers: rays");
     mapped_rays_ = static_cast<accel::Ray*>(mapped);
-    hits_ = create_mapped_buffer(capacity * sizeof(accel::Hit), GL_MAP_WRITE_BIT, &mapped, "hit");
+    hits_ = create_persistently_mapped_buffer(capacity * sizeof(accel::Hit), GL_MAP_WRITE_BIT, &mapped,
+                                              "ray buffers: hits");
     mapped_hits_ = static_cast<accel::Hit*>(mapped);
   } else {
     rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);

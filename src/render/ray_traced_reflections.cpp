@@ -16,15 +16,6 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-std::unique_ptr<rt::RayTracer> built_tracer(const Scene& scene, const RayTracingSettings& settings) {
-  settings.validate();
-  std::unique_ptr<rt::RayTracer> tracer = rt::make_ray_tracer(settings.backend);
-  if (!settings.traced_instances.empty())
-    tracer = std::make_unique<rt::InstanceSubsetTracer>(std::move(tracer), settings.traced_instances);
-  tracer->build(scene, settings.accel);
-  return tracer;
-}
-
 RayHitMemory buffer_memory(rt::RayTracer& tracer) {
   return tracer.device_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
 }
@@ -36,6 +27,15 @@ std::size_t pixel_count(int width, int height) {
 
 }  // namespace
 
+std::unique_ptr<rt::RayTracer> build_ray_tracer(const Scene& scene, const RayTracingSettings& settings) {
+  settings.validate();
+  std::unique_ptr<rt::RayTracer> tracer = rt::make_ray_tracer(settings.backend);
+  if (!settings.traced_instances.empty())
+    tracer = std::make_unique<rt::InstanceSubsetTracer>(std::move(tracer), settings.traced_instances);
+  tracer->build(scene, settings.accel);
+  return tracer;
+}
+
 void RayTracingSettings::validate() const {
   if (!(origin_offset_fraction >= 0.0f) || !(origin_offset_fraction < 0.1f))
     fail("ray tracing: origin offset fraction {} must be in [0, 0.1)", origin_offset_fraction);
@@ -44,9 +44,9 @@ void RayTracingSettings::validate() const {
 }
 
 RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int height,
-                                           const RayTracingSettings& settings)
+                                           const RayTracingSettings& settings, rt::RayTracer& tracer)
     : settings_(settings),
-      tracer_(built_tracer(scene, settings)),
+      tracer_(&tracer),
       device_(tracer_->device_tracing()),
       buffers_(pixel_count(width, height), buffer_memory(*tracer_)),
       ray_list_(width, height, buffers_),
@@ -59,12 +59,6 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
   }
   const float diagonal = length(scene.world_bounds().extent());
   ray_list_.set_origin_offset(settings.origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f));
-}
-
-double RayTracedReflections::update_meshes(const Scene& scene, std::span<const std::uint32_t> dirty_meshes) {
-  const auto start = Clock::now();
-  tracer_->update(scene, dirty_meshes, settings_.update);
-  return milliseconds_since(start);
 }
 
 std::size_t RayTracedReflections::slot_of(std::uint64_t run) const {
@@ -101,13 +95,7 @@ void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot) {
     stats.trace_ms = milliseconds_since(trace_start);
     return;
   }
-  // The tracer keeps one pair of CUDA events: the previous run's trace time is read before this
-  // trace overwrites it. That waits for the previous frame's trace only, which the GPU reaches
-  // before this frame's work, so the GPU never runs dry here.
-  if (trace_time_pending_) {
-    slot_stats_[slot_of(*trace_time_pending_)].trace_ms = device_->last_trace_ms();
-    trace_time_pending_.reset();
-  }
+  collect_trace_time();
   // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the
   // trace. Both happen on the GPU: the host only enqueues.
   cuda::ScopedInteropMap mapped(*interop_, device_->stream());
@@ -128,11 +116,13 @@ std::optional<RayTraceFrameStats> RayTracedReflections::take_stats(std::uint64_t
   return RayTraceFrameStats{counts->rays, counts->reflective, slot_stats_[slot].trace_ms};
 }
 
-double RayTracedReflections::update_meshes_on_device(std::span<const std::uint32_t> dirty_meshes) {
-  if (!device_) fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
-  const auto start = Clock::now();
-  device_->update_device(dirty_meshes, settings_.update);
-  return milliseconds_since(start);
+void RayTracedReflections::collect_trace_time() {
+  // The tracer keeps one pair of CUDA events: the previous run's trace time is read before the next
+  // trace overwrites it. That waits for the previous frame's trace only, which the GPU reaches
+  // before this frame's work, so the GPU never runs dry here.
+  if (!device_ || !trace_time_pending_) return;
+  slot_stats_[slot_of(*trace_time_pending_)].trace_ms = device_->last_trace_ms();
+  trace_time_pending_.reset();
 }
 
 RayTraceFrameStats RayTracedReflections::frame_stats() {

@@ -7,11 +7,12 @@
 //      mapped host memory, after the CPU waited for the list; a GPU backend (cuda) in GPU memory
 //      shared with CUDA, with no host wait and no copy (rt::DeviceTracing, cuda::GlBufferInterop);
 //   3. HitShadingPass (GPU): the hits are shaded like the raster path into the reflection image.
-// Deforming meshes reach the backend through update_meshes() with the chosen UpdatePolicy.
+// The tracer is not owned: FramePipeline builds one (build_ray_tracer) for reflections and shadow
+// rays alike and updates it once per frame for deforming meshes.
 //
-//   RayTracedReflections traced(scene, 1280, 720, settings);      // builds the structures
-//   traced.update_meshes(scene, dirty);                            // after a deformation
-//   auto stats = traced.run(raster, ssr.failure_mask(), ssr.reflection(), &timer);
+//   auto tracer = build_ray_tracer(scene, settings);               // shared with shadow rays
+//   RayTracedReflections traced(scene, 1280, 720, settings, *tracer);
+//   traced.run(raster, ssr.failure_mask(), ssr.reflection(), &timer);
 #include "cuda/gl_buffer_interop.h"
 #include "gl/gpu_timer.h"
 #include "render/hit_shading_pass.h"
@@ -55,18 +56,16 @@ struct RayTraceFrameStats {
   double trace_ms = 0.0;
 };
 
+// The settings' backend (with traced_instances: only those), its structures built over `scene`
+// (timed: stats().build_ms). glint::Error for bad settings or an unknown backend.
+std::unique_ptr<rt::RayTracer> build_ray_tracer(const Scene& scene, const RayTracingSettings& settings);
+
 class RayTracedReflections {
 public:
-  // Builds the backend's structures over `scene` (timed: tracer().stats().build_ms) and creates the
-  // buffers and passes for width x height. Needs a current GL context.
-  RayTracedReflections(const Scene& scene, int width, int height, const RayTracingSettings& settings);
-
-  // After the vertices of `dirty_meshes` moved in `scene`: brings the backend's structures up to
-  // date by the settings' policy. Returns the wall time in milliseconds.
-  double update_meshes(const Scene& scene, std::span<const std::uint32_t> dirty_meshes);
-  // The same after a GPU deformer rewrote the GPU backend's device positions (DeviceTracing):
-  // nothing comes from the host. glint::Error with a CPU backend.
-  double update_meshes_on_device(std::span<const std::uint32_t> dirty_meshes);
+  // Creates the buffers and passes for width x height around `tracer` (built over `scene`, e.g. by
+  // build_ray_tracer; it must outlive this). Needs a current GL context.
+  RayTracedReflections(const Scene& scene, int width, int height, const RayTracingSettings& settings,
+                       rt::RayTracer& tracer);
 
   // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
   // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GL steps
@@ -82,6 +81,9 @@ public:
   std::optional<RayTraceFrameStats> take_stats(std::uint64_t run, bool wait);
   // The statistics of the last run(); with a GPU backend, waits for that frame's GPU work first.
   RayTraceFrameStats frame_stats();
+  // GPU backend: reads the last run's trace time from the tracer's CUDA events (waiting for that
+  // trace), before another trace on the shared tracer (shadow rays) overwrites them. Else nothing.
+  void collect_trace_time();
 
   const rt::RayTracer& tracer() const { return *tracer_; }
   rt::RayTracer& tracer() { return *tracer_; }
@@ -95,7 +97,7 @@ private:
   void trace(RayListCounts host_counts, std::size_t slot);
   std::size_t slot_of(std::uint64_t run) const;
 
-  std::unique_ptr<rt::RayTracer> tracer_;
+  rt::RayTracer* tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
   RayHitBuffers buffers_;
   std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only

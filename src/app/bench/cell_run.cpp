@@ -47,6 +47,7 @@ RenderOptions render_options(const Cell& cell, const std::string& reflections, c
   if (cell.trace_deformable_only) options.deform_on = "cpu";
   options.shadow_map_size = settings.shadow_map_size;
   options.gbuffer = settings.gbuffer;
+  options.shadows = settings.shadows;
   options.command_line = settings.command_line;
   return options;
 }

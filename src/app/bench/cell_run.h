@@ -24,6 +24,7 @@ struct CellRunSettings {
   int shadow_map_size = 1024;
   std::string command_line;    // for the render settings' record
   std::string gbuffer = "raster";  // glint render --gbuffer
+  std::string shadows = "cube";    // glint render --shadows
 };
 
 // cells/<id>.csv, cells/<id>.json and (quality cells) the folder of images.
