@@ -3,7 +3,8 @@
 // {t, instance, prim, u, v} is turned back into a surface point from the GpuScene buffers (the
 // instance's mesh, its triangle `prim`, barycentrics u, v: surface_point() of
 // include/surface_point.glsl, shared with the visibility G-buffer), and shaded exactly like the raster path:
-// the material's albedo times its texture, the light's cube-map shadow at the hit, and
+// the material's albedo times its texture, the light's cube-map shadow at the hit (with rt and
+// hybrid shadows: the answer of a shadow ray cast from the hit, hit_shadow_rays.comp.glsl), and
 // surface_radiance() with the reflecting surface as the viewer. The result goes to the ray's pixel
 // of the reflection image as vec4(radiance, distance from the reflecting surface to the hit).
 //
@@ -23,6 +24,7 @@ layout(local_size_x = 64) in;
 #include "include/surface_lighting.glsl"
 #include "include/cube_shadow.glsl"
 #include "include/trilinear_texel.glsl"
+#include "include/occlusion_flag.glsl"
 
 struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
 struct Hit { float t; uint instance; uint prim; float u; float v; };    // accel::Hit
@@ -46,6 +48,9 @@ uniform float pcf_radius_texels;
 uniform float constant_bias_texels;
 uniform float slope_bias_texels;
 uniform float normal_offset_texels;
+// 1 with rt and hybrid shadows: ray i's shadow ray from the hit (hit_shadow_rays.comp.glsl) answered
+// by the tracer's occlusion query replaces the cube-map lookup.
+uniform int shadow_from_rays;
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
 
@@ -87,7 +92,8 @@ void main() {
 
   const CubeShadowSettings shadow_settings = CubeShadowSettings(light_position_range.xyz, near_distance, texel_angle,
       pcf_radius_texels, constant_bias_texels, slope_bias_texels, normal_offset_texels);
-  const float shadow = cube_shadow_visibility(shadow_cube, shadow_settings, position, normal);
+  const float shadow = shadow_from_rays != 0 ? (occluded(uint(i)) ? 0.0 : 1.0)
+                                             : cube_shadow_visibility(shadow_cube, shadow_settings, position, normal);
   const vec3 to_viewer = -normalize(ray.direction);
   const vec3 radiance = surface_radiance(position, normal, to_viewer, albedo, material, shadow, ambient_fraction);
   imageStore(reflection, pixel, vec4(radiance, hit.t * length(ray.direction)));

@@ -9,11 +9,7 @@ layout(binding = 3, r8) uniform writeonly image2D shadow_mask;
 
 struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
 layout(std430, binding = 10) readonly buffer ShadowRays { Ray rays[]; };
-// The occlusion query's answers: one uint per ray from a GPU backend (trace_any_device), one byte
-// per ray from a CPU backend (trace_any's uint8_t span), four to a word, first in the low byte.
-layout(std430, binding = 11) readonly buffer Occluded { uint occluded[]; };
-
-uniform int flag_bytes;  // 4 or 1
+#include "include/occlusion_flag.glsl"
 
 void main() {
   const ivec2 size = imageSize(shadow_mask);
@@ -26,6 +22,5 @@ void main() {
     else if (t_min == 3.0) imageStore(shadow_mask, pixel, vec4(1.0));
     return;
   }
-  const uint flag = flag_bytes == 4 ? occluded[i] : (occluded[i >> 2u] >> (8u * (i & 3u))) & 0xFFu;
-  imageStore(shadow_mask, pixel, vec4(flag != 0u ? 0.0 : 1.0));
+  imageStore(shadow_mask, pixel, vec4(occluded(i) ? 0.0 : 1.0));
 }

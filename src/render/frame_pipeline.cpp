@@ -70,7 +70,9 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
       resolve_(width, height, settings.resolve) {
   if (uses_ssr(settings_.reflections)) ssr_.emplace(width, height, settings_.ssr);
   if (uses_ray_tracer(settings_)) tracer_ = build_ray_tracer(scene, settings_.ray_tracing);
-  if (uses_ray_tracing(settings_.reflections)) ray_traced_.emplace(scene, width, height, settings_.ray_tracing, *tracer_);
+  if (uses_ray_tracing(settings_.reflections))
+    ray_traced_.emplace(scene, width, height, settings_.ray_tracing, *tracer_,
+                        /*shadow_rays=*/settings_.shadows.method != ShadowMethod::cube);
   if (settings_.shadows.method != ShadowMethod::cube)
     shadow_rays_.emplace(scene, width, height, settings_.shadows.method, *tracer_,
                          settings_.ray_tracing.origin_offset_fraction, settings_.shadows.hybrid_depth_edge_fraction);
@@ -107,8 +109,8 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   const auto slot = static_cast<std::size_t>(frames_rendered_ % kFramesInFlight);
   RasterShadowSteps shadow;
   if (shadow_rays_) {
-    // rt shadows skip the cube map unless ray-traced reflection hits still look their shadow up in it.
-    shadow.cube = settings_.shadows.method == ShadowMethod::hybrid || ray_traced_.has_value();
+    // rt shadows need no cube map: reflection hits cast shadow rays too.
+    shadow.cube = settings_.shadows.method == ShadowMethod::hybrid;
     shadow.after_cube = [&] {
       if (ray_traced_) ray_traced_->collect_trace_time();  // before the shared tracer's events are reused
       shadow_rays_->run(raster_);

@@ -118,6 +118,8 @@ public:
   rt::DeviceTracing* device_tracing() { return tracer_ ? tracer_->device_tracing() : nullptr; }
   // The shadow rays (rt and hybrid shadows), for tests; null with cube shadows.
   const RayTracedShadows* shadow_rays() const { return shadow_rays_ ? &*shadow_rays_ : nullptr; }
+  // The ray-traced reflections (hybrid and rt reflections), for tests; null otherwise.
+  const RayTracedReflections* ray_traced_reflections() const { return ray_traced_ ? &*ray_traced_ : nullptr; }
   // albedo, normals, positions, depth, shadow mask; with SSR its reflection and failure mask; with ray
   // tracing the traced reflection; with both the combined reflection. Waits for the GPU; see
   // debug_views.h for how each is made viewable.

@@ -45,6 +45,11 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays)
   program_.set_uniform("normal_offset_texels", raster.normal_offset_texels);
   program_.set_uniform("ambient_fraction", raster.ambient_fraction);
   program_.set_uniform("texture_layer_size", static_cast<float>(inputs.scene->texture_layer_size()));
+  program_.set_uniform("shadow_from_rays", inputs.shadow_answers != nullptr ? 1 : 0);
+  if (inputs.shadow_answers != nullptr) {
+    program_.set_uniform("occlusion_flag_bytes", inputs.shadow_answers->flag_bytes());
+    inputs.shadow_answers->bind();
+  }
 
   inputs.scene->bind_resources();
   buffers_->bind();

@@ -3,7 +3,8 @@
 // shades its hit record {t, instance, prim, u, v} from the GpuScene buffers alone, with the
 // materials, textures and lighting of the raster path (shaders/include/surface_lighting.glsl) and
 // the shadow of the light's cube map (shaders/include/cube_shadow.glsl, valid at any world
-// position), and stores vec4(radiance, reflected distance) at the ray's pixel of the reflection
+// position; with rt and hybrid shadows, the answer of a shadow ray from the hit: HitShadowRays),
+// and stores vec4(radiance, reflected distance) at the ray's pixel of the reflection
 // image, in the format SSR writes (kReflectionFormat), so both go through the same resolve.
 // A miss stores the sky colour at kMissDistance: the sky is infinitely far, so the distance fade
 // removes it unless the fade is off.
@@ -12,6 +13,7 @@
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
+#include "render/occlusion_buffers.h"
 #include "render/ray_hit_buffers.h"
 #include "render/raster_settings.h"
 #include "render/shadow_cube_pass.h"
@@ -31,6 +33,9 @@ struct HitShadingInputs {
   const RasterSettings* raster = nullptr;       // shadow bias, PCF and ambient, as the raster path used
   GLuint frame_constants = 0;                   // uniform buffer holding FrameConstants
   GLuint reflection = 0;                        // target: kReflectionFormat, width x height
+  // With rt and hybrid shadows: the answers of the shadow rays cast from the hits (HitShadowRays),
+  // slot i for ray i, used instead of the cube map; null: the cube map.
+  const OcclusionBuffers* shadow_answers = nullptr;
 };
 
 class HitShadingPass {

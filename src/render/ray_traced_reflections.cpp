@@ -44,7 +44,8 @@ void RayTracingSettings::validate() const {
 }
 
 RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int height,
-                                           const RayTracingSettings& settings, rt::RayTracer& tracer)
+                                           const RayTracingSettings& settings, rt::RayTracer& tracer,
+                                           bool shadow_rays)
     : settings_(settings),
       tracer_(&tracer),
       device_(tracer_->device_tracing()),
@@ -58,7 +59,9 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
     interop_.emplace(shared);
   }
   const float diagonal = length(scene.world_bounds().extent());
-  ray_list_.set_origin_offset(settings.origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f));
+  const float origin_offset = settings.origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f);
+  ray_list_.set_origin_offset(origin_offset);
+  if (shadow_rays) hit_shadows_.emplace(buffers_.capacity(), tracer, origin_offset);
 }
 
 std::size_t RayTracedReflections::slot_of(std::uint64_t run) const {
@@ -78,8 +81,10 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
   trace(host_counts, slot);
   const auto max_rays = static_cast<std::uint32_t>(device_ ? buffers_.capacity() : host_counts.rays);
   run_timed_pass(timer, "hit_shade", [&] {
+    // The hits' shadow rays are part of shading them (a CPU backend waits for their list here).
+    if (hit_shadows_) hit_shadows_->run(buffers_, raster.gpu_scene(), raster.frame_constants_buffer(), max_rays);
     hit_shading_.run({&raster.gpu_scene(), &raster.shadow_cube(), &raster.settings(), raster.frame_constants_buffer(),
-                      reflection},
+                      reflection, hit_shadows_ ? &hit_shadows_->answers() : nullptr},
                      max_rays);
   });
   if (device_) buffers_.request_counts(slot);  // read frames later, when the GPU is past them

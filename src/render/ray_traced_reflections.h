@@ -16,6 +16,7 @@
 #include "cuda/gl_buffer_interop.h"
 #include "gl/gpu_timer.h"
 #include "render/hit_shading_pass.h"
+#include "render/hit_shadow_rays.h"
 #include "render/raster_pipeline.h"
 #include "render/ray_hit_buffers.h"
 #include "render/ray_list_pass.h"
@@ -64,8 +65,10 @@ class RayTracedReflections {
 public:
   // Creates the buffers and passes for width x height around `tracer` (built over `scene`, e.g. by
   // build_ray_tracer; it must outlive this). Needs a current GL context.
+  // With `shadow_rays` (rt and hybrid shadows) each hit's shadow is a shadow ray through the same
+  // tracer (HitShadowRays), else the cube map's.
   RayTracedReflections(const Scene& scene, int width, int height, const RayTracingSettings& settings,
-                       rt::RayTracer& tracer);
+                       rt::RayTracer& tracer, bool shadow_rays = false);
 
   // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
   // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GL steps
@@ -90,6 +93,9 @@ public:
   // The GPU backend's device side, or null for a CPU backend.
   rt::DeviceTracing* device_tracing() { return device_; }
   const RayTracingSettings& settings() const { return settings_; }
+  // The rays and hits of the last run (tests), and the hits' shadow rays (null without shadow rays).
+  const RayHitBuffers& ray_buffers() const { return buffers_; }
+  const HitShadowRays* hit_shadow_rays() const { return hit_shadows_ ? &*hit_shadows_ : nullptr; }
 
 private:
   RayTracingSettings settings_;
@@ -109,6 +115,7 @@ private:
   // trace overwrites them).
   std::optional<std::uint64_t> trace_time_pending_;
   RayListPass ray_list_;
+  std::optional<HitShadowRays> hit_shadows_;  // with shadow rays
   HitShadingPass hit_shading_;
 };
 

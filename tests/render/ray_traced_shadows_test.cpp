@@ -3,6 +3,7 @@
 // occlusion of those rays, the backends agree pixel for pixel, the shared tracer follows deforming
 // meshes, and hybrid differs from rt on a bounded fraction of an atrium-simple frame.
 #include "cuda/device_query.h"
+#include "metrics/rmse_psnr.h"
 #include "render/frame_pipeline.h"
 #include "rt/ray_tracer.h"
 #include "scene/presets.h"
@@ -150,6 +151,20 @@ TEST_F(RayTracedShadowsTest, CudaAndOptixMasksEqualTheCpuBackends) {
       EXPECT_EQ(render_mask(atrium, method, "optix"), cpu) << shadow_method_name(method);
     }
   }
+  // Whole frames with ray-traced reflections, whose hits cast shadow rays through the same tracer:
+  // the bar for GPU backends (PSNR >= 50 dB against the cpu backend).
+  const auto frame = [&](const std::string& backend) {
+    FramePipelineSettings settings = shadow_settings(ShadowMethod::rt, backend);
+    settings.reflections = ReflectionMode::rt;
+    FramePipeline pipeline(atrium.scene, kWidth, kHeight, settings);
+    pipeline.render(atrium.frame);
+    return pipeline.read_final();
+  };
+  const ImageRgba8 cpu = frame("cpu");
+  EXPECT_GE(metrics::rmse_psnr(frame("cuda"), cpu).psnr, 50.0);
+  if (GLINT_HAVE_OPTIX) {
+    EXPECT_GE(metrics::rmse_psnr(frame("optix"), cpu).psnr, 50.0);
+  }
 }
 
 // Fraction of pixels where two masks differ.
@@ -185,6 +200,47 @@ TEST_F(RayTracedShadowsTest, HybridEqualsRtButOnABoundedFractionOfPixels) {
     EXPECT_LT(cast_fraction, 0.5) << "hybrid traces a minority of the pixels";
     EXPECT_GT(cast, 0u);
   }
+}
+
+// Reflection hits cast shadow rays too (rt and hybrid shadows): ray i's shadow ray starts at ray i's
+// hit point and goes to the light, and its answer is the occlusion another tracer finds for it. The
+// cube map is not drawn in rt mode, so without these rays reflected shadows would be lost.
+TEST_F(RayTracedShadowsTest, ReflectionHitsCastShadowRays) {
+  const AtriumSimpleFrame atrium(2100);
+  FramePipelineSettings settings = shadow_settings(ShadowMethod::rt, "cpu");
+  settings.reflections = ReflectionMode::rt;
+  FramePipeline pipeline(atrium.scene, kWidth, kHeight, settings);
+  pipeline.render(atrium.frame);
+  const std::uint32_t count = pipeline.ray_trace_stats()->rays_traced;
+  ASSERT_GT(count, 1000u);
+  const RayTracedReflections& reflections = *pipeline.ray_traced_reflections();
+  const std::vector<accel::Ray> rays(reflections.ray_buffers().rays(count).begin(),
+                                     reflections.ray_buffers().rays(count).end());
+  const std::unique_ptr<rt::RayTracer> reference = rt::make_ray_tracer("embree");
+  reference->build(atrium.scene, {});
+  const std::vector<accel::Hit> hits = testing::trace(*reference, rays);
+  const OcclusionBuffers& answers = reflections.hit_shadow_rays()->answers();
+  const std::vector<accel::Ray> shadow_rays(answers.rays().begin(), answers.rays().begin() + count);
+  const float scale = length(atrium.scene.world_bounds().extent());
+  int cast = 0;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (hits[i].prim == accel::Hit::kInvalidIndex) {
+      EXPECT_TRUE(empty_ray(shadow_rays[i])) << "a miss casts no shadow ray, ray " << i;
+      continue;
+    }
+    if (empty_ray(shadow_rays[i])) continue;  // facing away from the light
+    ++cast;
+    const vec3 hit_point = rays[i].origin + hits[i].t * rays[i].direction;
+    EXPECT_LT(length(shadow_rays[i].origin - hit_point), 1e-3f * scale) << "ray " << i;
+    EXPECT_LT(length(shadow_rays[i].origin + shadow_rays[i].direction - atrium.frame.light_position), 1e-3f * scale);
+  }
+  EXPECT_GT(cast, static_cast<int>(count) / 4);
+  const std::vector<std::uint8_t> expected = testing::trace_occluded(*reference, shadow_rays);
+  const std::vector<std::uint8_t> actual(answers.occluded().begin(), answers.occluded().begin() + count);
+  EXPECT_EQ(testing::compare_occluded(shadow_rays, expected, actual), "");
+  int occluded = 0;
+  for (const std::uint8_t flag : actual) occluded += flag;
+  EXPECT_GT(occluded, 100) << "shadows are seen in the floor's reflection";
 }
 
 // One tracer serves shadows (and reflections) and is updated once per frame: after the dinosaurs

@@ -1,0 +1,45 @@
+#include "render/hit_shadow_rays.h"
+
+#include "core/error.h"
+#include "gl/gl_check.h"
+#include "gl/gl_pass_scope.h"
+#include "render/compute_dispatch.h"
+#include "render/frame_constants.h"
+
+#include <cmath>
+
+namespace glint::render {
+namespace {
+
+constexpr GLuint kWorkGroupSize = 64;  // local_size_x in hit_shadow_rays.comp.glsl
+
+}  // namespace
+
+HitShadowRays::HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset)
+    : buffers_(capacity, tracer, "reflection shadow rays"),
+      program_(ShaderProgram::from_embedded({"hit_shadow_rays.comp.glsl"})) {
+  if (!(origin_offset >= 0.0f) || !std::isfinite(origin_offset))
+    fail("reflection shadow rays: origin offset {} must be finite and >= 0", origin_offset);
+  program_.set_uniform("origin_offset", origin_offset);
+  check_gl("reflection shadow rays: set-up");
+}
+
+void HitShadowRays::run(RayHitBuffers& buffers, const GpuScene& scene, GLuint frame_constants,
+                        std::uint32_t max_rays) {
+  GlPassScope scope("hit_shadow_rays");
+  if (max_rays > buffers_.capacity())
+    fail("reflection shadow rays: {} rays, more than the capacity {}", max_rays, buffers_.capacity());
+  if (max_rays == 0) return;
+  scene.bind_resources();
+  buffers.bind();
+  buffers_.bind();
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants);
+  program_.set_uniform("max_rays", static_cast<int>(max_rays));
+  program_.use();
+  glDispatchCompute(work_groups(max_rays, kWorkGroupSize), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  buffers_.trace(max_rays);
+  check_gl("reflection shadow rays");
+}
+
+}  // namespace glint::render

@@ -1,0 +1,69 @@
+#include "render/occlusion_buffers.h"
+
+#include "core/error.h"
+#include "gl/gl_check.h"
+#include "render/persistent_buffer.h"
+
+#include <string>
+
+namespace glint::render {
+
+OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what)
+    : capacity_(capacity), what_(what), tracer_(&tracer), device_(tracer.device_tracing()) {
+  if (capacity == 0) fail("{}: capacity must be at least one ray", what_);
+  const auto count = static_cast<std::uint32_t>(capacity);
+  ray_count_ = create_buffer(sizeof(count), &count, 0);
+  if (device_) {
+    rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
+    occluded_ = create_buffer(capacity * sizeof(std::uint32_t), nullptr, 0);  // trace_any_device: a uint per ray
+    const cuda::InteropBuffer shared[] = {{rays_.id(), cuda::InteropAccess::read_only},
+                                          {occluded_.id(), cuda::InteropAccess::write_discard},
+                                          {ray_count_.id(), cuda::InteropAccess::read_only}};
+    interop_.emplace(shared);
+  } else {
+    void* mapped = nullptr;
+    rays_ = create_persistently_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped,
+                                              (std::string(what) + ": rays").c_str());
+    mapped_rays_ = static_cast<accel::Ray*>(mapped);
+    // trace_any writes a byte per ray; shaders read whole uints, so the size is rounded up.
+    occluded_ = create_persistently_mapped_buffer((capacity + 3) / 4 * 4, GL_MAP_WRITE_BIT, &mapped,
+                                                  (std::string(what) + ": answers").c_str());
+    mapped_occluded_ = static_cast<std::uint8_t*>(mapped);
+    ray_fence_.emplace(1, sizeof(count), what);
+  }
+  check_gl(what);
+}
+
+void OcclusionBuffers::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowRayBinding, rays_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowOcclusionBinding, occluded_.id());
+}
+
+void OcclusionBuffers::trace(std::size_t host_count) {
+  if (device_) {
+    // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping orders the GL
+    // passes that read the answers after the trace: the host only enqueues.
+    cuda::ScopedInteropMap mapped(*interop_, device_->stream());
+    device_->trace_any_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<std::uint32_t>(1),
+                              mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
+    return;
+  }
+  if (host_count > capacity_) fail("{}: {} rays, more than the capacity {}", what_, host_count, capacity_);
+  // The fence behind a 4-byte copy also makes the rays reach the coherent mapping (the ring's
+  // barrier); the answers the CPU writes reach GL commands issued after them (coherent mapping).
+  ray_fence_->copy_buffer(0, ray_count_.id(), sizeof(std::uint32_t));
+  (void)ray_fence_->read(0, /*wait=*/true);
+  tracer_->trace_any({mapped_rays_, host_count}, {mapped_occluded_, host_count});
+}
+
+std::span<const accel::Ray> OcclusionBuffers::rays() const {
+  if (mapped_rays_ == nullptr) fail("{}: the rays of a GPU backend stay in GPU memory", what_);
+  return {mapped_rays_, capacity_};
+}
+
+std::span<const std::uint8_t> OcclusionBuffers::occluded() const {
+  if (mapped_occluded_ == nullptr) fail("{}: the answers of a GPU backend stay in GPU memory", what_);
+  return {mapped_occluded_, capacity_};
+}
+
+}  // namespace glint::render

@@ -1,0 +1,66 @@
+#pragma once
+// Shadow rays and the occlusion query's answers between GL and a ray tracer (RayTracedShadows: one
+// ray per pixel; RayTracedReflections: one per reflection hit), created once for `capacity` rays:
+//  - CPU backends (cpu, embree): both in host memory, mapped persistently (persistent_buffer.h), so
+//    trace_any reads the rays and writes one byte per ray in place, after the CPU waited for the
+//    pass that wrote the rays (a fence);
+//  - GPU backends (cuda, optix): both in GPU memory, shared with CUDA once (GlBufferInterop) and
+//    mapped around each trace_any_device (one uint per ray; the count, `capacity`, sits in a GL
+//    buffer too), so the host never waits.
+//   rays     (kShadowRayBinding):       accel::Ray[capacity]; an empty ray (t_min > t_max) is never occluded
+//   answers  (kShadowOcclusionBinding): uint[], read in GLSL by occlusion_flag.glsl's
+//            `occluded(i)` with the flag_bytes() uniform (4: a uint per ray, 1: four bytes to a uint)
+#include "accel/ray.h"
+#include "cuda/gl_buffer_interop.h"
+#include "gl/gl_objects.h"
+#include "gl/readback_ring.h"
+#include "rt/ray_tracer.h"
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace glint::render {
+
+// Storage bindings of the shadow rays and their answers (1..5 are the scene's, 6..9 the reflection
+// rays': render_targets.h).
+inline constexpr GLuint kShadowRayBinding = 10;
+inline constexpr GLuint kShadowOcclusionBinding = 11;
+
+class OcclusionBuffers {
+public:
+  // `tracer` must outlive this. glint::Error for capacity 0. Needs a current GL context.
+  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what);
+  OcclusionBuffers(const OcclusionBuffers&) = delete;  // owns mapped pointers
+  OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
+
+  void bind() const;  // rays and answers to their storage bindings
+  int flag_bytes() const { return device_ ? 4 : 1; }
+
+  // After the pass that wrote the rays was issued (and a shader-storage barrier): answers them.
+  // CPU backends trace the first `host_count` rays after waiting for the GPU; GPU backends trace
+  // all `capacity` on the tracer's stream (rays past the frame's count must be empty).
+  void trace(std::size_t host_count);
+
+  // CPU backends: the rays and answers of the last trace, for tests; glint::Error for a GPU backend.
+  std::span<const accel::Ray> rays() const;
+  std::span<const std::uint8_t> occluded() const;
+  std::size_t capacity() const { return capacity_; }
+
+private:
+  std::size_t capacity_;
+  const char* what_;
+  rt::RayTracer* tracer_;
+  rt::DeviceTracing* device_;  // tracer_'s device side, or null
+  GlBuffer rays_, occluded_;
+  GlBuffer ray_count_;  // one uint, `capacity`: what the GPU backends read on the GPU
+  accel::Ray* mapped_rays_ = nullptr;        // CPU backends
+  std::uint8_t* mapped_occluded_ = nullptr;  // CPU backends
+  std::optional<ReadbackRing> ray_fence_;    // CPU backends: the wait for the rays
+  std::optional<cuda::GlBufferInterop> interop_;  // GPU backends: rays, answers, count
+};
+
+}  // namespace glint::render
