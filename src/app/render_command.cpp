@@ -162,9 +162,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::IsMember({"off", "ssr", "hybrid", "rt"}))
       ->capture_default_str();
   command->add_option("--backend", options.backend,
-                      "Ray tracing backend for hybrid and rt: cpu (glint's own structures on the CPU), embree, or "
-                      "cuda (glint's own structures on the GPU; needs a CUDA GPU), or optix (NVIDIA OptiX's; needs a "
-                      "build with OptiX, docs/optix.md)")
+                      "Ray tracing backend for hybrid and rt reflections and --shadows rt|hybrid: cpu (glint's own "
+                      "structures on the CPU), embree, or cuda (glint's own structures on the GPU; needs a CUDA GPU), "
+                      "or optix (NVIDIA OptiX's; needs a build with OptiX, docs/optix.md)")
       ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix"}))
       ->capture_default_str();
   command->add_option("--accel", options.accel,
