@@ -243,6 +243,47 @@ TEST_F(RayTracedShadowsTest, ReflectionHitsCastShadowRays) {
   EXPECT_GT(occluded, 100) << "shadows are seen in the floor's reflection";
 }
 
+// Hit shading uses the hits' shadow rays: the traced reflection with rt shadows (no cube map drawn)
+// matches the one shaded with the full cube map on most pixels, including shadowed ones; were the
+// answers ignored, every hit would be lit and the shadowed ones would differ.
+TEST_F(RayTracedShadowsTest, ReflectedShadowsMatchTheCubeMapsOnMostPixels) {
+  const AtriumSimpleFrame atrium(2100);
+  std::vector<bool> reflective;  // the pixels rt reflections trace
+  const auto traced_reflection = [&](ShadowMethod method, double* occluded_fraction) {
+    FramePipelineSettings settings = shadow_settings(method, "cpu");
+    settings.reflections = ReflectionMode::rt;
+    FramePipeline pipeline(atrium.scene, kWidth, kHeight, settings);
+    pipeline.render(atrium.frame);
+    if (occluded_fraction != nullptr) {
+      const std::uint32_t count = pipeline.ray_trace_stats()->rays_traced;
+      const auto answers = pipeline.ray_traced_reflections()->hit_shadow_rays()->answers().occluded();
+      std::size_t occluded = 0;
+      for (std::uint32_t i = 0; i < count; ++i) occluded += answers[i];
+      *occluded_fraction = static_cast<double>(occluded) / static_cast<double>(count);
+    }
+    reflective.clear();
+    for (const vec4& p : pipeline.raster().read_rgbaf(RasterOutput::AlbedoReflectivity).pixels)
+      reflective.push_back(p.w > 0.0f);
+    for (DebugView& view : pipeline.read_debug_views())
+      if (view.name == "traced_reflection") return std::move(view.image);
+    return ImageRgba8(1, 1);
+  };
+  double occluded = 0.0;
+  const ImageRgba8 rays = traced_reflection(ShadowMethod::rt, &occluded);
+  const ImageRgba8 cube = traced_reflection(ShadowMethod::cube, nullptr);
+  std::size_t traced = 0, equal = 0;
+  for (std::size_t i = 0; i < rays.pixels.size(); ++i) {
+    if (!reflective[i]) continue;
+    ++traced;
+    equal += rays.pixels[i] == cube.pixels[i];
+  }
+  const double equal_fraction = static_cast<double>(equal) / static_cast<double>(traced);
+  std::printf("reflection hits: %.3f shadowed by rays, %.3f of traced pixels equal the cube-shadowed ones\n",
+              occluded, equal_fraction);
+  EXPECT_GT(occluded, 0.1);
+  EXPECT_GT(equal_fraction, 1.0 - occluded / 2) << "shadowed hits are dark as in the cube-shadowed reflection";
+}
+
 // One tracer serves shadows (and reflections) and is updated once per frame: after the dinosaurs
 // move, the mask equals a pipeline's built on the moved scene, and differs when left un-updated.
 TEST_F(RayTracedShadowsTest, SharedTracerFollowsDeformingMeshes) {
