@@ -57,6 +57,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.raster.shadow_map_size = options.shadow_map_size;
   settings.raster.shadow_cube_draw = render::parse_shadow_cube_draw(options.shadow_cube_draw);
   settings.raster.gbuffer = render::parse_gbuffer_method(options.gbuffer);
+  settings.raster.primary = render::parse_primary_visibility(options.primary);
   settings.shadows.method = render::parse_shadow_method(options.shadows);
   settings.ssr.max_steps = options.ssr_max_steps;
   settings.ssr.thickness = options.ssr_thickness;
@@ -256,6 +257,12 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                    "How the G-buffer is made: raster (one draw that shades every image) or visibility (a draw of "
                    "triangle ids, then a compute pass rebuilds the images); same images (docs/render.md)")
       ->check(CLI::IsMember({"raster", "visibility"}))
+      ->capture_default_str();
+  command
+      ->add_option("--primary", options.primary,
+                   "With --gbuffer visibility, how the triangle ids are made: raster (the id draw) or rt (a camera "
+                   "ray per pixel through the --backend tracer); an experiment (docs/render.md)")
+      ->check(CLI::IsMember({"raster", "rt"}))
       ->capture_default_str();
   command
       ->add_option("--shadows", options.shadows,

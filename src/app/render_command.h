@@ -42,6 +42,7 @@ struct RenderOptions {
   int shadow_map_size = 1024;
   std::string shadow_cube_draw = "per-face";
   std::string gbuffer = "raster";  // raster|visibility (render::GBufferMethod)
+  std::string primary = "raster";  // raster|rt (render::PrimaryVisibility; rt only with visibility)
   std::string shadows = "cube";    // cube|rt|hybrid (render::ShadowMethod)
   int ssr_max_steps = 256;
   float ssr_thickness = 0.5f;

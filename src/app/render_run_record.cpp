@@ -57,6 +57,7 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"shadow_map_size", options.shadow_map_size},
           {"shadow_cube_draw", options.shadow_cube_draw},
           {"gbuffer", options.gbuffer},
+          {"primary", options.primary},
           {"shadows", options.shadows},
           {"ssr_max_steps", options.ssr_max_steps},
           {"ssr_thickness", options.ssr_thickness},

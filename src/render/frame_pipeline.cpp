@@ -52,7 +52,8 @@ ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float k
 }  // namespace
 
 bool uses_ray_tracer(const FramePipelineSettings& settings) {
-  return uses_ray_tracing(settings.reflections) || settings.shadows.method != ShadowMethod::cube;
+  return uses_ray_tracing(settings.reflections) || settings.shadows.method != ShadowMethod::cube ||
+         settings.raster.primary == PrimaryVisibility::rt;
 }
 
 void FramePipelineSettings::validate() const {
@@ -70,6 +71,7 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
       resolve_(width, height, settings.resolve) {
   if (uses_ssr(settings_.reflections)) ssr_.emplace(width, height, settings_.ssr);
   if (uses_ray_tracer(settings_)) tracer_ = build_ray_tracer(scene, settings_.ray_tracing);
+  if (settings_.raster.primary == PrimaryVisibility::rt) raster_.trace_primary_visibility(*tracer_);
   if (uses_ray_tracing(settings_.reflections))
     ray_traced_.emplace(scene, width, height, settings_.ray_tracing, *tracer_,
                         /*shadow_rays=*/settings_.shadows.method != ShadowMethod::cube);
@@ -116,6 +118,9 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
       shadow_rays_->run(raster_);
     };
   }
+  // The primary rays trace first on the shared tracer: the last frame's reflection trace time is
+  // read before they overwrite its events.
+  if (ray_traced_ && settings_.raster.primary == PrimaryVisibility::rt) ray_traced_->collect_trace_time();
   raster_.render(frame, timer, shadow);
   if (ssr_) {
     run_timed_pass(timer, "ssr", [&] {

@@ -58,7 +58,8 @@ struct FramePipelineSettings {
   void validate() const;  // throws glint::Error naming the first bad setting
 };
 
-// Whether the settings need a ray tracer: hybrid or rt reflections, or rt or hybrid shadows.
+// Whether the settings need a ray tracer: hybrid or rt reflections, rt or hybrid shadows, or rt
+// primary visibility.
 bool uses_ray_tracer(const FramePipelineSettings& settings);
 
 // What a frame counted (and, with final capture, its final image), read back after the GPU finished it.

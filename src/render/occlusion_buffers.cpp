@@ -8,14 +8,25 @@
 
 namespace glint::render {
 
-OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what)
-    : capacity_(capacity), what_(what), tracer_(&tracer), device_(tracer.device_tracing()) {
+namespace {
+
+// Bytes of the answers: a Hit per ray (closest); any: a uint per ray on the GPU, a byte per ray on
+// the CPU, rounded up to whole uints since shaders read uints.
+std::size_t answer_bytes(std::size_t capacity, RayQuery query, bool device) {
+  if (query == RayQuery::closest) return capacity * sizeof(accel::Hit);
+  return device ? capacity * sizeof(std::uint32_t) : (capacity + 3) / 4 * 4;
+}
+
+}  // namespace
+
+OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query)
+    : capacity_(capacity), what_(what), query_(query), tracer_(&tracer), device_(tracer.device_tracing()) {
   if (capacity == 0) fail("{}: capacity must be at least one ray", what_);
   const auto count = static_cast<std::uint32_t>(capacity);
   ray_count_ = create_buffer(sizeof(count), &count, 0);
   if (device_) {
     rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
-    occluded_ = create_buffer(capacity * sizeof(std::uint32_t), nullptr, 0);  // trace_any_device: a uint per ray
+    occluded_ = create_buffer(answer_bytes(capacity, query, true), nullptr, 0);
     const cuda::InteropBuffer shared[] = {{rays_.id(), cuda::InteropAccess::read_only},
                                           {occluded_.id(), cuda::InteropAccess::write_discard},
                                           {ray_count_.id(), cuda::InteropAccess::read_only}};
@@ -25,8 +36,7 @@ OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, 
     rays_ = create_persistently_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped,
                                               (std::string(what) + ": rays").c_str());
     mapped_rays_ = static_cast<accel::Ray*>(mapped);
-    // trace_any writes a byte per ray; shaders read whole uints, so the size is rounded up.
-    occluded_ = create_persistently_mapped_buffer((capacity + 3) / 4 * 4, GL_MAP_WRITE_BIT, &mapped,
+    occluded_ = create_persistently_mapped_buffer(answer_bytes(capacity, query, false), GL_MAP_WRITE_BIT, &mapped,
                                                   (std::string(what) + ": answers").c_str());
     mapped_occluded_ = static_cast<std::uint8_t*>(mapped);
     ray_fence_.emplace(1, sizeof(count), what);
@@ -44,6 +54,11 @@ void OcclusionBuffers::trace(std::size_t host_count) {
     // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping orders the GL
     // passes that read the answers after the trace: the host only enqueues.
     cuda::ScopedInteropMap mapped(*interop_, device_->stream());
+    if (query_ == RayQuery::closest) {
+      device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
+                                    mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
+      return;
+    }
     device_->trace_any_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<std::uint32_t>(1),
                               mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
     return;
@@ -53,7 +68,10 @@ void OcclusionBuffers::trace(std::size_t host_count) {
   // barrier); the answers the CPU writes reach GL commands issued after them (coherent mapping).
   ray_fence_->copy_buffer(0, ray_count_.id(), sizeof(std::uint32_t));
   (void)ray_fence_->read(0, /*wait=*/true);
-  tracer_->trace_any({mapped_rays_, host_count}, {mapped_occluded_, host_count});
+  if (query_ == RayQuery::closest)
+    tracer_->trace_closest({mapped_rays_, host_count}, {reinterpret_cast<accel::Hit*>(mapped_occluded_), host_count});
+  else
+    tracer_->trace_any({mapped_rays_, host_count}, {mapped_occluded_, host_count});
 }
 
 std::span<const accel::Ray> OcclusionBuffers::rays() const {
@@ -62,8 +80,15 @@ std::span<const accel::Ray> OcclusionBuffers::rays() const {
 }
 
 std::span<const std::uint8_t> OcclusionBuffers::occluded() const {
+  if (query_ != RayQuery::any) fail("{}: the answers are hits, not occlusion flags", what_);
   if (mapped_occluded_ == nullptr) fail("{}: the answers of a GPU backend stay in GPU memory", what_);
   return {mapped_occluded_, capacity_};
+}
+
+std::span<const accel::Hit> OcclusionBuffers::hits() const {
+  if (query_ != RayQuery::closest) fail("{}: the answers are occlusion flags, not hits", what_);
+  if (mapped_occluded_ == nullptr) fail("{}: the hits of a GPU backend stay in GPU memory", what_);
+  return {reinterpret_cast<const accel::Hit*>(mapped_occluded_), capacity_};
 }
 
 }  // namespace glint::render

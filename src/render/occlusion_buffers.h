@@ -10,6 +10,9 @@
 //   rays     (kShadowRayBinding):       accel::Ray[capacity]; an empty ray (t_min > t_max) is never occluded
 //   answers  (kShadowOcclusionBinding): uint[], read in GLSL by occlusion_flag.glsl's
 //            `occluded(i)` with the flag_bytes() uniform (4: a uint per ray, 1: four bytes to a uint)
+// With RayQuery::closest (PrimaryRayPass: camera rays) the same buffers answer the closest-hit
+// query instead: the answers are accel::Hit[capacity] on every backend (trace_closest,
+// trace_closest_device; std430 `struct { float t; uint instance, prim; float u, v; }`).
 #include "accel/ray.h"
 #include "cuda/gl_buffer_interop.h"
 #include "gl/gl_objects.h"
@@ -30,10 +33,13 @@ namespace glint::render {
 inline constexpr GLuint kShadowRayBinding = 10;
 inline constexpr GLuint kShadowOcclusionBinding = 11;
 
+// Which query trace() asks: any hit (occlusion flags) or the closest hit (accel::Hit per ray).
+enum class RayQuery { any, closest };
+
 class OcclusionBuffers {
 public:
   // `tracer` must outlive this. glint::Error for capacity 0. Needs a current GL context.
-  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what);
+  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query = RayQuery::any);
   OcclusionBuffers(const OcclusionBuffers&) = delete;  // owns mapped pointers
   OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
 
@@ -48,17 +54,19 @@ public:
   // CPU backends: the rays and answers of the last trace, for tests; glint::Error for a GPU backend.
   std::span<const accel::Ray> rays() const;
   std::span<const std::uint8_t> occluded() const;
+  std::span<const accel::Hit> hits() const;  // RayQuery::closest
   std::size_t capacity() const { return capacity_; }
 
 private:
   std::size_t capacity_;
   const char* what_;
+  RayQuery query_;
   rt::RayTracer* tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
   GlBuffer rays_, occluded_;
   GlBuffer ray_count_;  // one uint, `capacity`: what the GPU backends read on the GPU
   accel::Ray* mapped_rays_ = nullptr;        // CPU backends
-  std::uint8_t* mapped_occluded_ = nullptr;  // CPU backends
+  std::uint8_t* mapped_occluded_ = nullptr;  // CPU backends (closest: the accel::Hit array's bytes)
   std::optional<ReadbackRing> ray_fence_;    // CPU backends: the wait for the rays
   std::optional<cuda::GlBufferInterop> interop_;  // GPU backends: rays, answers, count
 };

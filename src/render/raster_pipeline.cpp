@@ -36,7 +36,7 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
                          ? std::optional<ShadowChunks>(std::in_place, scene, gpu_scene_)
                          : std::nullopt) {
   if (settings_.gbuffer == GBufferMethod::visibility) {
-    visibility_ids_.emplace(targets_);
+    if (settings_.primary == PrimaryVisibility::raster) visibility_ids_.emplace(targets_);
     visibility_gbuffer_.emplace(targets_);
   } else {
     gbuffer_.emplace(targets_);
@@ -58,7 +58,12 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
   if (gbuffer_) {
     gbuffer_->run(gpu_scene_);
   } else {
-    visibility_ids_->run(gpu_scene_);
+    if (primary_rays_)
+      primary_rays_->run();
+    else if (visibility_ids_)
+      visibility_ids_->run(gpu_scene_);
+    else
+      fail("raster pipeline: ray-traced primary visibility without a ray tracer (trace_primary_visibility)");
     visibility_gbuffer_->run(gpu_scene_);
   }
   timed.reset();
@@ -71,6 +76,13 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "light");
   lighting_.run(gpu_scene_, settings_);
+}
+
+void RasterPipeline::trace_primary_visibility(rt::RayTracer& tracer) {
+  if (settings_.primary != PrimaryVisibility::rt)
+    fail("raster pipeline: a primary-ray tracer given with primary visibility '{}'",
+         primary_visibility_name(settings_.primary));
+  primary_rays_.emplace(targets_, tracer);
 }
 
 ImageRgbaF RasterPipeline::read_rgbaf(RasterOutput output) const {

@@ -15,6 +15,7 @@
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
 #include "render/lighting_pass.h"
+#include "render/primary_ray_pass.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
 #include "render/shadow_chunks.h"
@@ -52,6 +53,13 @@ public:
   // visibility method: the id draw and the compute resolve together), "shadow", "light".
   void render(const FrameState& frame, GpuTimer* timer = nullptr, const RasterShadowSteps& shadow = {});
 
+  // PrimaryVisibility::rt: the tracer whose camera rays make the visibility ids (PrimaryRayPass);
+  // it must be built over the scene and outlive the pipeline. Must be called before the first
+  // render() with rt (glint::Error there otherwise); glint::Error with PrimaryVisibility::raster.
+  void trace_primary_visibility(rt::RayTracer& tracer);
+  // The primary rays (PrimaryVisibility::rt after trace_primary_visibility), for tests; else null.
+  const PrimaryRayPass* primary_rays() const { return primary_rays_ ? &*primary_rays_ : nullptr; }
+
   GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
   GLuint world_position() const { return targets_.world_position.id(); }
   GLuint world_normal_roughness() const { return targets_.world_normal_roughness.id(); }
@@ -86,6 +94,7 @@ private:
   std::optional<GBufferPass> gbuffer_;
   std::optional<VisibilityIdPass> visibility_ids_;
   std::optional<VisibilityGBufferPass> visibility_gbuffer_;
+  std::optional<PrimaryRayPass> primary_rays_;  // PrimaryVisibility::rt instead of visibility_ids_
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;

@@ -41,10 +41,26 @@ GBufferMethod parse_gbuffer_method(std::string_view name) {
   fail("raster settings: unknown G-buffer method '{}' (known: raster, visibility)", name);
 }
 
+std::string_view primary_visibility_name(PrimaryVisibility primary) {
+  switch (primary) {
+    case PrimaryVisibility::raster: return "raster";
+    case PrimaryVisibility::rt: return "rt";
+  }
+  return "unknown";
+}
+
+PrimaryVisibility parse_primary_visibility(std::string_view name) {
+  for (const PrimaryVisibility primary : {PrimaryVisibility::raster, PrimaryVisibility::rt})
+    if (primary_visibility_name(primary) == name) return primary;
+  fail("raster settings: unknown primary visibility '{}' (known: raster, rt)", name);
+}
+
 void RasterSettings::validate() const {
   if (shadow_map_size < 1) fail("raster settings: shadow_map_size = {} must be at least 1", shadow_map_size);
   if (max_texture_layer_size < 1)
     fail("raster settings: max_texture_layer_size = {} must be at least 1", max_texture_layer_size);
+  if (primary == PrimaryVisibility::rt && gbuffer != GBufferMethod::visibility)
+    fail("raster settings: ray-traced primary visibility needs the visibility G-buffer (--gbuffer visibility)");
   require_non_negative(pcf_radius_texels, "pcf_radius_texels");
   require_non_negative(constant_bias_texels, "constant_bias_texels");
   require_non_negative(slope_bias_texels, "slope_bias_texels");

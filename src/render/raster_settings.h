@@ -29,10 +29,23 @@ enum class GBufferMethod { raster, visibility };
 std::string_view gbuffer_method_name(GBufferMethod method);
 GBufferMethod parse_gbuffer_method(std::string_view name);
 
+// How the visibility G-buffer's ids are made (only with GBufferMethod::visibility):
+//   raster  VisibilityIdPass draws every instance
+//   rt      one camera ray per pixel centre through the frame's ray tracer (PrimaryRayPass), whose
+//           closest hits become the ids; the depth target is not written (no frame pass reads it)
+// An experiment (issue 19 item 4) until measured on the H100, where the rasteriser runs on a few
+// SMs and the GPU tracers on all of them (docs/render.md, "Ray-traced primary visibility").
+enum class PrimaryVisibility { raster, rt };
+
+// "raster", "rt"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
+std::string_view primary_visibility_name(PrimaryVisibility primary);
+PrimaryVisibility parse_primary_visibility(std::string_view name);
+
 struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels
   ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
   GBufferMethod gbuffer = GBufferMethod::raster;
+  PrimaryVisibility primary = PrimaryVisibility::raster;  // rt: needs gbuffer visibility and a tracer
   float pcf_radius_texels = 1.5f;     // 0 = one shadow sample (hard edges), else 20-sample PCF
   float constant_bias_texels = 0.5f;  // distance bias at normal incidence
   float slope_bias_texels = 1.0f;     // times tan(angle between normal and light) x (1 + PCF radius)
