@@ -41,9 +41,11 @@ struct RenderOptions {
   std::string tone_map = "aces";
   int shadow_map_size = 1024;
   std::string shadow_cube_draw = "per-face";
-  std::string gbuffer = "raster";  // raster|visibility (render::GBufferMethod)
+  // The defaults of gbuffer and shadows are the fastest methods measured on the H100 and on llvmpipe
+  // (docs/perf.md, "GPU-first frame"); glint bench keeps the paper's (raster, cube).
+  std::string gbuffer = "visibility";  // raster|visibility (render::GBufferMethod)
   std::string primary = "raster";  // raster|rt (render::PrimaryVisibility; rt only with visibility)
-  std::string shadows = "cube";    // cube|rt|hybrid (render::ShadowMethod)
+  std::string shadows = "rt";      // cube|rt|hybrid (render::ShadowMethod)
   int ssr_max_steps = 256;
   float ssr_thickness = 0.5f;
   float ssr_confidence = 0.9f;
