@@ -91,8 +91,8 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
          options.update);
   if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
       !rt::is_gpu_backend(options.backend))
-    fail("--deform-on gpu needs --backend cuda or optix when reflections are ray traced (the {} backend builds from host "
-         "vertices); use --deform-on cpu",
+    fail("--deform-on gpu needs --backend cuda or optix when rays are traced (reflections hybrid or rt, shadows rt or "
+         "hybrid, or primary rt; the {} backend builds from host vertices); use --deform-on cpu",
          options.backend);
   settings.validate();
   return settings;

@@ -20,9 +20,9 @@ ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
 //   raster      one draw whose fragment shader interpolates, samples textures and writes every image
 //   visibility  one draw writing only depth and a {instance, triangle} id, then one compute pass that
 //               rebuilds every image from the ids and the scene buffers (docs/render.md)
-// raster stays the default until both are measured on the H100 (on llvmpipe the visibility buffer
-// took 40 ms against 64 ms at 320x180, with its own texture filter there: docs/render.md,
-// "Visibility G-buffer").
+// RasterSettings keeps raster, the paper's pipeline (glint bench's default too); glint render defaults
+// to visibility, the faster one on both machines: 1.16 against 1.98 ms on the H100 (atrium,
+// 1280x720), 40 against 64 ms on llvmpipe (atrium-simple, 320x180); docs/perf.md, "GPU-first frame".
 enum class GBufferMethod { raster, visibility };
 
 // "raster", "visibility"; parse_gbuffer_method is the inverse (glint::Error naming the known ones).
@@ -33,8 +33,9 @@ GBufferMethod parse_gbuffer_method(std::string_view name);
 //   raster  VisibilityIdPass draws every instance
 //   rt      one camera ray per pixel centre through the frame's ray tracer (PrimaryRayPass), whose
 //           closest hits become the ids; the depth target is not written (no frame pass reads it)
-// An experiment (issue 19 item 4) until measured on the H100, where the rasteriser runs on a few
-// SMs and the GPU tracers on all of them (docs/render.md, "Ray-traced primary visibility").
+// An experiment (issue 19 item 4): on the H100 the G-buffer pass takes 0.86 instead of 1.16 ms, but
+// the frame is not faster at 1280x720 (the camera rays add a CUDA-GL hand-over; docs/render.md,
+// "Ray-traced primary visibility"), so raster is the default everywhere.
 enum class PrimaryVisibility { raster, rt };
 
 // "raster", "rt"; parse_primary_visibility is the inverse (glint::Error naming the known ones).

@@ -1,12 +1,15 @@
 #pragma once
 // How the point light's shadow reaches the shadow mask (docs/render.md, "Shadow methods"):
-//   cube    the cube map (ShadowCubePass) filtered by PCF (ShadowMaskPass): the paper's method and
-//           the default
+//   cube    the cube map (ShadowCubePass) filtered by PCF (ShadowMaskPass): the paper's method, the
+//           default of ShadowSettings and of glint bench
 //   rt      one shadow ray per lit pixel towards the light, through the ray tracer's occlusion query
 //           (RayTracedShadows); no cube map unless ray-traced reflection hits still need one
 //   hybrid  the cube map at a reduced size (ShadowSettings::hybrid_cube_divisor), plus shadow rays only
 //           where its filtered result is uncertain (partly lit, or near a shadow or depth edge), in
 //           the spirit of AMD FidelityFX Hybrid Shadows
+// glint render defaults to rt: exact hard shadows of the point light, and the fastest method on both
+// machines (shadow pass 0.72 against 3.45 ms on the H100, 11 against 105 ms on llvmpipe with the cpu
+// backend; docs/perf.md, "GPU-first frame").
 #include <string_view>
 
 namespace glint::render {

@@ -156,7 +156,8 @@ TEST_F(RenderCli, CudaBackendWithoutAGpuIsOneClearLine) {
   if (cuda_gpu_present()) GTEST_SKIP() << "this machine has a CUDA GPU (the cuda backend runs instead)";
   TempFolder folder;
   const fs::path out = folder.path() / "cuda";
-  for (const char* flags : {"--backend cuda", "--reflections ssr --deform-on gpu"}) {
+  // The GPU deformer alone (no ray tracer: ssr reflections, cube shadows) needs CUDA too.
+  for (const char* flags : {"--backend cuda", "--reflections ssr --shadows cube --deform-on gpu"}) {
     const CliResult r = run_glint(std::string("render atrium-simple --frames 2100 --width 32 --height 18 ") + flags +
                                   " --out " + quoted(out));
     EXPECT_EQ(r.exit_code, 1) << flags;
@@ -164,6 +165,19 @@ TEST_F(RenderCli, CudaBackendWithoutAGpuIsOneClearLine) {
     EXPECT_NE(r.err.find("CUDA"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << flags;
   }
+}
+
+TEST_F(RenderCli, GpuDeformationWithACpuTracerIsOneClearLine) {
+  // rt shadows (the default) build the --backend tracer in every reflection mode; a CPU tracer builds
+  // from host vertices and cannot follow meshes the GPU deformed.
+  TempFolder folder;
+  const fs::path out = folder.path() / "gpu-deform";
+  const CliResult r = run_glint("render atrium-simple --frames 2100 --width 32 --height 18 --reflections ssr "
+                                "--deform-on gpu --out " + quoted(out));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("--deform-on gpu needs --backend cuda or optix when rays are traced"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
