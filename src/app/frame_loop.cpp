@@ -146,7 +146,7 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
   last_completed_at_ms_ = times->completed_at_ms;
   measured.times = std::move(*times);
   measured.deform_ms = oldest.deform.deform_ms;
-  measured.accel_update_ms = oldest.deform.accel_update_ms;
+  if (pipeline_.ray_tracer() != nullptr) measured.accel_update_ms = oldest.deform.accel_update_ms;
   measured.ssr_counts = readback->ssr_counts;
   measured.ray_stats = readback->ray_stats;
   measured.final_image = std::move(readback->final_image);

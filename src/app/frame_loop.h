@@ -48,7 +48,9 @@ struct FrameMeasurement {
   // Latency: from the start of this frame's CPU work (deformation first) to the GPU finishing it.
   double latency_ms = 0.0;
   double deform_ms = 0.0;                               // cpu: deformers + GL vertex upload; gpu: the kernels
-  double accel_update_ms = 0.0;                         // the ray tracer's update of deformed meshes
+  // The ray tracer's update of deformed meshes; absent without a ray tracer (one exists when
+  // reflections, shadows or primary visibility trace rays).
+  std::optional<double> accel_update_ms;
   std::optional<render::SsrCounts> ssr_counts;          // with SSR
   std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
   // Sampled when the frame's results were read, for long-run checks (docs/reliability.md): the

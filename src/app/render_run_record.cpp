@@ -118,7 +118,7 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   row.emplace_back(frame.frame_ms);
   row.emplace_back(frame.latency_ms);
   row.emplace_back(frame.deform_ms);
-  row.emplace_back(rays ? CsvField(frame.accel_update_ms) : CsvField(""));
+  row.emplace_back(frame.accel_update_ms ? CsvField(*frame.accel_update_ms) : CsvField(""));
   row.emplace_back(rays ? CsvField(rays->trace_ms) : CsvField(""));
   row.emplace_back(triangles_);
   row.emplace_back(ssr ? CsvField(ssr->reflective) : rays ? CsvField(rays->reflective_pixels) : CsvField(""));
@@ -132,8 +132,8 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   recorded["frame_ms"] = frame.frame_ms;
   recorded["frame_latency_ms"] = frame.latency_ms;
   recorded["deform_ms"] = frame.deform_ms;
+  if (frame.accel_update_ms) recorded["accel_update_ms"] = *frame.accel_update_ms;
   if (rays) {
-    recorded["accel_update_ms"] = frame.accel_update_ms;
     recorded["trace_ms"] = rays->trace_ms;
     recorded["rays_traced"] = rays->rays_traced;
   }

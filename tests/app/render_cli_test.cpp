@@ -89,8 +89,9 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
 TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoImages) {
   TempFolder folder;
   const fs::path out = folder.path() / "off";
-  const CliResult r = run_glint("render atrium-simple --reflections off --timings-only --width 32 --height 18 --frames 0 --out " +
-                                quoted(out));
+  // Cube shadows: no ray tracer at all (rt shadows, the default, build one in every reflection mode).
+  const CliResult r = run_glint("render atrium-simple --reflections off --shadows cube --timings-only --width 32 --height 18 "
+                                "--frames 0 --out " + quoted(out));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_NE(entry.path().extension(), ".png") << entry.path();

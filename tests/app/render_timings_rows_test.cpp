@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace glint::testing {
 namespace {
@@ -36,6 +37,31 @@ TEST(RenderTimingsRows, EveryFrameOnceInOrderWithNoEmptyField) {
   }
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary left behind: " << entry.path();
+}
+
+// accel_update_ms is the tracer's update: written whenever a tracer exists (here only the shadows
+// trace rays, the deforming meshes' structures are refitted every frame), empty without one.
+TEST(RenderTimingsRows, StructureUpdateIsRecordedWhenOnlyTheShadowsTraceRays) {
+  TempFolder folder;
+  const auto accel_update_column = [&](const char* shadows) {
+    const fs::path out = folder.path() / shadows;
+    const CliResult r = run_glint(std::string("render atrium-simple --reflections ssr --shadows ") + shadows +
+                                  " --deform on --update refit --backend cpu --width 32 --height 18 --frames 100:101 "
+                                  "--timings-only --out " + quoted(out));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const auto csv = read_csv(out / "timings.csv");
+    std::vector<std::string> column;
+    for (std::size_t c = 0; !csv.empty() && c < csv[0].size(); ++c)
+      if (csv[0][c] == "accel_update_ms")
+        for (std::size_t row = 1; row < csv.size(); ++row) column.push_back(csv[row][c]);
+    return column;
+  };
+  const std::vector<std::string> traced = accel_update_column("rt");
+  ASSERT_EQ(traced.size(), 2u);
+  for (const std::string& value : traced) EXPECT_FALSE(value.empty());
+  const std::vector<std::string> cube = accel_update_column("cube");
+  ASSERT_EQ(cube.size(), 2u);
+  for (const std::string& value : cube) EXPECT_TRUE(value.empty()) << value;
 }
 
 }  // namespace
