@@ -177,7 +177,8 @@ TEST_F(BenchCli, QuickRunWritesEveryOutputResumesAndRemeasuresADamagedCell) {
   for (const char* section : {"# glint bench", "## Setup", "## Cells", "## Frame times", "### Fig. 5", "### Fig. 12",
                               "## Image quality", "### Table I:", "### Table II:", "## Skipped and failed cells",
                               "## Charts", "| Resolution | 96x54 |", "| GL renderer |", "| Commit |", "--stride",
-                              "fig8-cpu-sah"})
+                              "fig8-cpu-sah", "| Shadows | cube: cube map 128x128 per face |", "| G-buffer | raster |",
+                              "| Frame time | steady state"})
     EXPECT_NE(report.find(section), std::string::npos) << section;
   EXPECT_NE(report.find(summary["command"].get<std::string>()), std::string::npos) << "the command line";
   EXPECT_TRUE(fs::exists(out / "plot_bench.py"));

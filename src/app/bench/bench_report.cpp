@@ -176,11 +176,17 @@ void setup_section(std::string& text, const nlohmann::json& summary, const Repor
   text += fmt::format("| Frames | walkthrough frames 0 to {}, every {} (--stride), {} warm-up frame(s) per cell; "
                       "quality tables at the paper's frames |\n",
                       settings["frames"].get<int>() - 1, settings["stride"].get<int>(), settings["warmup_frames"].get<int>());
-  text += fmt::format("| Shadow map | {}x{} per cube face |\n", settings["shadow_map_size"].get<int>(),
-                      settings["shadow_map_size"].get<int>());
+  // Settings of runs made before --shadows and --gbuffer existed lack them: those ran cube and raster.
+  const std::string shadows = settings.value("shadows", std::string("cube"));
+  const int cube_size = settings["shadow_map_size"].get<int>();
+  text += shadows == "rt" ? std::string("| Shadows | rt: a shadow ray per lit pixel and per reflection hit, no cube map |\n")
+                          : fmt::format("| Shadows | {}: cube map {}x{} per face{} |\n", shadows, cube_size, cube_size,
+                                        shadows == "hybrid" ? " at half that size, shadow rays where it is uncertain" : "");
+  text += fmt::format("| G-buffer | {} |\n", settings.value("gbuffer", std::string("raster")));
   text += fmt::format(
-      "| Frame time | wall clock of a whole frame (deformation, structure update, every pass, glFinish); charts "
-      "average intervals of {} measured frames, as the paper averages 10-frame intervals |\n\n",
+      "| Frame time | steady state: the time between consecutive frames' completions on the GPU with up to three "
+      "frames in flight (deformation, structure update and every pass included); charts average intervals of {} "
+      "measured frames, as the paper averages 10-frame intervals |\n\n",
       settings["interval_frames"].get<int>());
   text += "Backends:\n\n";
   for (const nlohmann::json& backend : summary["backends"])
