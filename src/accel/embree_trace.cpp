@@ -3,6 +3,7 @@
 // packets were about 1.2-1.3x faster than rtcIntersect1 per ray for primary rays and on average no
 // slower (noisy) for reflection rays.
 // Any-hit queries stay single-ray: shadow rays are incoherent and the bench does not time them.
+#include "accel/embree_ray.h"
 #include "accel/embree_scene.h"
 
 #include "accel/trace.h"
@@ -20,21 +21,6 @@ constexpr size_t kPacket = 8;
 // Packets per TBB task: 64 rays, the same grain as glint's own batches (accel/trace.cpp).
 constexpr size_t kPacketGrain = 8;
 constexpr size_t kRayGrain = 64;
-
-void set_ray(const Ray& in, RTCRay& out) {
-  out.org_x = in.origin.x;
-  out.org_y = in.origin.y;
-  out.org_z = in.origin.z;
-  out.tnear = in.t_min;
-  out.dir_x = in.direction.x;
-  out.dir_y = in.direction.y;
-  out.dir_z = in.direction.z;
-  out.time = 0.0f;
-  out.tfar = in.t_max;
-  out.mask = 0xFFFFFFFFu;
-  out.id = 0;
-  out.flags = 0;
-}
 
 // Lanes past the end of the batch are switched off in `valid` (and filled with a copy of the last
 // ray, so Embree never reads uninitialised floats).
@@ -99,7 +85,7 @@ void EmbreeScene::trace_any(std::span<const Ray> rays, std::span<uint8_t> occlud
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
       RTCRay ray;
-      set_ray(rays[i], ray);
+      ray = embree_ray(rays[i]);
       rtcOccluded1(scene_, &context, &ray);
       // Embree marks an occluded ray by setting tfar to -infinity.
       occluded[i] = ray.tfar == -kInfinity ? 1 : 0;

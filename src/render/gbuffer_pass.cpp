@@ -7,6 +7,19 @@
 
 namespace glint::render {
 
+void draw_scene_depth_tested(GLuint framebuffer, int width, int height, const ShaderProgram& program,
+                             const GpuScene& scene) {
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  program.use();
+  scene.draw_all_instances();
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+}
+
 GBufferPass::GBufferPass(const RasterTargets& targets)
     : targets_(&targets),
       framebuffer_(create_framebuffer()),
@@ -37,15 +50,7 @@ void GBufferPass::run(const GpuScene& scene) {
   glClearNamedFramebufferuiv(fb, GL_COLOR, 3, zero_id);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
 
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb);
-  glViewport(0, 0, targets_->width, targets_->height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program_.use();
-  scene.draw_all_instances();
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  draw_scene_depth_tested(fb, targets_->width, targets_->height, program_, scene);
   check_gl("G-buffer pass");
 }
 

@@ -12,6 +12,12 @@
 
 namespace glint::render {
 
+// Draws every instance of `scene` with `program` into framebuffer `framebuffer` (width x height)
+// under the depth state both G-buffer methods share (depth test less, no culling, no blending), so
+// GBufferPass and VisibilityIdPass keep the same surface at every pixel. Unbinds the framebuffer.
+void draw_scene_depth_tested(GLuint framebuffer, int width, int height, const ShaderProgram& program,
+                             const GpuScene& scene);
+
 class GBufferPass {
 public:
   explicit GBufferPass(const RasterTargets& targets);  // the targets must outlive the pass

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
+#include "render/gbuffer_pass.h"
 
 namespace glint::render {
 
@@ -29,16 +30,7 @@ void VisibilityIdPass::run(const GpuScene& scene) {
   glClearNamedFramebufferuiv(fb, GL_COLOR, 0, background);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
 
-  // The depth state of GBufferPass, so both methods keep the same surface at every pixel.
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb);
-  glViewport(0, 0, targets_->width, targets_->height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program_.use();
-  scene.draw_all_instances();
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  draw_scene_depth_tested(fb, targets_->width, targets_->height, program_, scene);
   check_gl("visibility id pass");
 }
 

@@ -1,5 +1,6 @@
 #include "rt/embree_ray_tracer.h"
 
+#include "accel/embree_ray.h"
 #include "accel/trace.h"
 #include "core/error.h"
 
@@ -19,24 +20,6 @@ constexpr size_t kRayGrain = 64;
 
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// glint's ray as Embree's: the same inclusive [tnear, tfar], every instance (mask), no motion.
-RTCRay embree_ray(const accel::Ray& ray) {
-  RTCRay query;
-  query.org_x = ray.origin.x;
-  query.org_y = ray.origin.y;
-  query.org_z = ray.origin.z;
-  query.tnear = ray.t_min;
-  query.dir_x = ray.direction.x;
-  query.dir_y = ray.direction.y;
-  query.dir_z = ray.direction.z;
-  query.time = 0.0f;
-  query.tfar = ray.t_max;
-  query.mask = 0xFFFFFFFFu;
-  query.id = 0;
-  query.flags = 0;
-  return query;
 }
 
 }  // namespace
@@ -172,7 +155,7 @@ void EmbreeRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
       RTCRayHit query;
-      query.ray = embree_ray(rays[i]);
+      query.ray = accel::embree_ray(rays[i]);
       query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(top_, &context, &query);
@@ -198,7 +181,7 @@ void EmbreeRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      RTCRay query = embree_ray(rays[i]);
+      RTCRay query = accel::embree_ray(rays[i]);
       // Embree's occlusion query stops at the first hit and marks it by setting tfar to -infinity.
       rtcOccluded1(top_, &context, &query);
       occluded[i] = query.tfar == -accel::kInfinity ? 1 : 0;
