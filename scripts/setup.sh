@@ -15,6 +15,8 @@ packages=(
   libglfw3-dev libimgui-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the Python module (python/, GLINT_PYTHON) and its tests (pytest, numpy; PIL reads PNGs)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-pil
   # fuzzing (preset fuzz): clang with libFuzzer and its sanitizer runtimes (libclang-rt-dev); the
   # asan preset uses gcc's own (libasan8, libubsan1, part of build-essential)
   clang libclang-rt-dev
