@@ -84,3 +84,5 @@ set_source_files_properties(${CMAKE_SOURCE_DIR}/src/cuda/gpu_sine_deformer.cu PR
 # triangle with the host's roundings gives the cpu backend's hits bit for bit; with contraction a
 # grazing ray's t differed by 1 % (1 of 100k reflection rays on the reduced atrium).
 set_source_files_properties(${CMAKE_SOURCE_DIR}/src/cuda/gpu_trace.cu PROPERTIES COMPILE_OPTIONS "-fmad=false")
+# And for the reflection hits' shadow rays, so they equal rt::hit_shadow_ray on the host bit for bit.
+set_source_files_properties(${CMAKE_SOURCE_DIR}/src/cuda/gpu_hit_shadow_rays.cu PROPERTIES COMPILE_OPTIONS "-fmad=false")
