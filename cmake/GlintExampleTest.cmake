@@ -22,7 +22,9 @@ set(prefix ${GLINT_WORK_DIR}/prefix)
 run_step("cmake --install" ${CMAKE_COMMAND} --install ${GLINT_BUILD_DIR} --prefix ${prefix} --component development)
 
 set(configure ${CMAKE_COMMAND} -S ${GLINT_EXAMPLE_DIR} -B ${GLINT_WORK_DIR}/build -G ${GLINT_GENERATOR}
-    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${GLINT_CXX_COMPILER})
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${GLINT_CXX_COMPILER}
+    # glint's own flags (the asan preset's sanitizers: the example links its instrumented library)
+    "-DCMAKE_CXX_FLAGS=${GLINT_CXX_FLAGS}")
 if(GLINT_CUDA_COMPILER)
   # The package looks the CUDA toolkit up again (glint::accel_cuda links its runtime).
   get_filename_component(cuda_bin ${GLINT_CUDA_COMPILER} DIRECTORY)

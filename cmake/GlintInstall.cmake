@@ -48,6 +48,7 @@ if(GLINT_BUILD_TESTS)
                    -DGLINT_EXAMPLE_DIR=${CMAKE_SOURCE_DIR}/examples/accel_trace
                    -DGLINT_WORK_DIR=${CMAKE_BINARY_DIR}/example-test
                    -DGLINT_CXX_COMPILER=${CMAKE_CXX_COMPILER}
+                   "-DGLINT_CXX_FLAGS=${CMAKE_CXX_FLAGS}"
                    -DGLINT_CUDA_COMPILER=${CMAKE_CUDA_COMPILER}
                    -DGLINT_GENERATOR=${CMAKE_GENERATOR}
                    -P ${CMAKE_SOURCE_DIR}/cmake/GlintExampleTest.cmake)

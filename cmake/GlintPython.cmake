@@ -10,6 +10,11 @@ function(glint_add_python_module)
     message(STATUS "glint: Python module off (GLINT_PYTHON=OFF)")
     return()
   endif()
+  # A sanitized module cannot be imported by an unsanitized interpreter (the runtime must load first).
+  if(GLINT_PYTHON STREQUAL "AUTO" AND CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+    message(STATUS "glint: Python module off (sanitizer flags; GLINT_PYTHON=AUTO)")
+    return()
+  endif()
   # Debian's interpreter, where setup.sh installs numpy and pytest, rather than the first python3 on
   # PATH (a pyenv or virtualenv one may lack both, or have no headers); -DPython3_EXECUTABLE overrides.
   if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
