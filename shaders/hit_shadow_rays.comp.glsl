@@ -1,13 +1,14 @@
 #version 450 core
 // Shadow rays from reflection hits (RayTracedReflections with rt or hybrid shadows, docs/hybrid.md):
 // one per listed reflection ray i, written to shadow ray i, so hit shading reads ray i's answer.
-// A hit's surface point is rebuilt as hit shading rebuilds it (surface_point.glsl); its normal is
-// turned towards the viewer (the reflecting surface), as surface_radiance shades it, and then
+// The rule is rt/hit_shadow_ray.h's, which a GPU backend that traces these rays with the hits
+// applies in CUDA (keep the two the same): n is the hit triangle's geometric normal (world space)
+// turned towards the reflection ray's origin (the side the reflecting surface sees), and
 //   origin    = hit point + origin_offset * n
 //   direction = light position - origin (unnormalised), t in [0, 1 - 1e-4]: the light is at t = 1
-// (the rule of shadow_rays.comp.glsl). A miss, a hit facing away from the light (unlit whatever
-// the shadow says) and, on a GPU backend, a slot past the list's count get an empty ray
-// (t_min > t_max), which is never occluded.
+// A miss, a degenerate triangle, a hit facing away from the light (unlit whatever the shadow says)
+// and, on a GPU backend, a slot past the list's count get an empty ray (t_min > t_max), which is
+// never occluded. The hit point is surface_point()'s, as hit shading rebuilds it.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
@@ -35,8 +36,14 @@ void main() {
     return;
   }
   const Hit hit = hits[i];
-  const SurfacePoint surface = surface_point(scene_triangle(hit.instance, hit.prim), vec2(hit.u, hit.v));
-  vec3 n = surface.normal;
+  const SceneTriangle triangle = scene_triangle(hit.instance, hit.prim);
+  const SurfacePoint surface = surface_point(triangle, vec2(hit.u, hit.v));
+  vec3 n = cross(triangle.position[1] - triangle.position[0], triangle.position[2] - triangle.position[0]);
+  if (!(length(n) > 0.0)) {
+    shadow_rays[i] = no_ray;
+    return;
+  }
+  n = normalize(n);
   if (dot(n, -rays[i].direction) < 0.0) n = -n;  // the side the reflecting surface sees
   const vec3 to_light = light_position_range.xyz - surface.position;
   if (dot(n, to_light) <= 0.0) {

@@ -60,13 +60,15 @@ FrameLoop::~FrameLoop() {
 }
 
 // On the CPU the new vertices are copied to GL and the tracer; with a GPU deformer nothing is copied
-// and the kernels' time is read later (read_cuda_times).
+// and the kernels' time is read when the frame is done (read_cuda_times).
 FrameLoop::DeformTimes FrameLoop::deform(int frame) {
   if (!deformers_) return {};
   DeformTimes times;
   if (gpu_deformer_) {
     const std::vector<std::uint32_t> dirty = gpu_deformer_->apply(frame);
+    times.deform_ticket = gpu_deformer_->last_apply();
     times.accel_update_ms = pipeline_.update_ray_tracer_on_device(dirty);
+    if (rt::DeviceTracing* device = pipeline_.device_tracing()) times.update_ticket = device->last_update();
     return times;
   }
   const auto start = Clock::now();
@@ -74,17 +76,16 @@ FrameLoop::DeformTimes FrameLoop::deform(int frame) {
   pipeline_.upload_meshes(dirty);
   times.deform_ms = milliseconds_since(start);
   times.accel_update_ms = pipeline_.update_ray_tracer(dirty);
+  // A GPU backend's update only enqueues work: its GPU time is reported instead.
+  if (rt::DeviceTracing* device = pipeline_.device_tracing()) times.update_ticket = device->last_update();
   return times;
 }
 
-void FrameLoop::read_cuda_times(InFlight& frame) {
-  frame.cuda_times_pending = false;
-  // The deformer and the tracer keep one pair of CUDA events each; waiting on them waits for this
-  // frame's first GPU work only, long done or next in line.
-  if (gpu_deformer_) frame.deform.deform_ms = gpu_deformer_->last_apply_ms();
-  // A GPU backend's update only enqueues work: report its GPU time instead.
-  if (rt::DeviceTracing* device = pipeline_.device_tracing(); device && deformers_)
-    if (const std::optional<double> update_ms = device->last_update_ms()) frame.deform.accel_update_ms = *update_ms;
+void FrameLoop::read_cuda_times(DeformTimes& times) {
+  // The frame's fence passed, and the frame's GL work came after its CUDA work: nothing waits here.
+  if (times.deform_ticket) times.deform_ms = gpu_deformer_->apply_ms(*times.deform_ticket, /*wait=*/true).value();
+  if (times.update_ticket)
+    times.accel_update_ms = pipeline_.device_tracing()->gpu_ms(*times.update_ticket, /*wait=*/true).value();
 }
 
 std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
@@ -93,10 +94,9 @@ std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
   while (in_flight_.size() > keep_in_flight_)
     if (std::optional<FrameMeasurement> finished = complete_oldest(false)) done.push_back(std::move(*finished));
     else break;
-  if (!in_flight_.empty() && in_flight_.back().cuda_times_pending) read_cuda_times(in_flight_.back());
   while (in_flight_.size() >= kFramesInFlight) done.push_back(*complete_oldest(true));
 
-  InFlight submitted{frame, submitted_++, {}, false, nullptr};
+  InFlight submitted{frame, submitted_++, {}, nullptr};
   timer_.begin_frame();  // the frame's latency starts here, before the deformation
   submitted.deform = deform(frame);
   pipeline_.render(animation_.at(frame), &timer_);
@@ -104,7 +104,6 @@ std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
   submitted.done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   if (submitted.done == nullptr) fail("frame {}: glFenceSync failed", frame);
   glFlush();  // hand the frame to the GPU now, so it runs while the CPU prepares the next one
-  submitted.cuda_times_pending = deformers_ && (gpu_deformer_ || pipeline_.device_tracing() != nullptr);
   in_flight_.push_back(submitted);
 
   if (serialized_) {
@@ -136,7 +135,7 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
   if (!fence_passed(oldest.done, wait, oldest.frame)) return std::nullopt;
   // The GPU finished the frame: its queries and readback copies are there, so nothing below waits
   // long (the queries' results may still take a moment to be reported).
-  if (oldest.cuda_times_pending) read_cuda_times(oldest);
+  read_cuda_times(oldest.deform);
   std::optional<FrameTimes> times = timer_.take_frame(oldest.index, /*wait=*/true);
   std::optional<render::FrameReadback> readback = pipeline_.take_readback(oldest.index, /*wait=*/true);
   FrameMeasurement measured;

@@ -109,18 +109,21 @@ private:
   struct DeformTimes {
     double deform_ms = 0.0;
     double accel_update_ms = 0.0;
+    // GPU work whose times replace the two above once the frame is done (read_cuda_times): the GPU
+    // deformer's kernels, a GPU backend's structure update.
+    std::optional<std::uint64_t> deform_ticket;
+    std::optional<rt::GpuTicket> update_ticket;
   };
   // A frame submitted and not yet returned.
   struct InFlight {
     int frame = 0;
     std::uint64_t index = 0;  // its number in the timer and the pipeline (0, 1, ... per submit)
     DeformTimes deform;
-    bool cuda_times_pending = false;  // its deform/update GPU times are still in CUDA events
     GLsync done = nullptr;            // signalled when the GPU finished the frame
   };
   DeformTimes deform(int frame);
-  // Reads the frame's CUDA event times before the next frame's work overwrites the events.
-  void read_cuda_times(InFlight& frame);
+  // Replaces a done frame's deform and update times by their GPU times, where tickets say so.
+  void read_cuda_times(DeformTimes& times);
   // The oldest frame in flight, when it is finished or `wait`; nullopt otherwise.
   std::optional<FrameMeasurement> complete_oldest(bool wait);
 

@@ -7,6 +7,7 @@
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_bvh_sah.h"
 #include "cuda/gpu_mesh.h"
+#include "cuda/gpu_time_ring.h"
 #include "cuda/gpu_trace.h"
 #include "cuda/pinned_upload.h"
 #include "rt/scene_shape.h"
@@ -22,6 +23,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Timed device-side traces and updates kept for gpu_ms (3 frames in flight of a few each).
+constexpr std::size_t kTimedSpans = 64;
+
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -33,22 +37,6 @@ bool builds_on_gpu(accel::BvhBuilder builder) {
 GpuBvhBuilder gpu_builder_of(accel::BvhBuilder builder) {
   return builder == accel::BvhBuilder::ploc ? GpuBvhBuilder::ploc : GpuBvhBuilder::lbvh;
 }
-
-// A start/stop pair of CUDA events around enqueued work: the GPU time, read when asked.
-class EventTimer {
-public:
-  void start(cudaStream_t stream) { start_.record(stream); }
-  void stop(cudaStream_t stream) {
-    stop_.record(stream);
-    recorded_ = true;
-  }
-  // Waits for the stop event; 0 before anything was timed.
-  double elapsed_ms() const { return recorded_ ? cuda::elapsed_ms(start_, stop_) : 0.0; }
-
-private:
-  CudaEvent start_, stop_;
-  bool recorded_ = false;
-};
 
 // Host memory the GPU copies small results into (page-locked, so the copy is truly asynchronous).
 template <typename T>
@@ -90,12 +78,16 @@ public:
   rt::DeviceTracing* device_tracing() override { return this; }
 
   void* stream() override { return stream_.get(); }
-  void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                            uint32_t capacity) override;
-  void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                        uint32_t capacity) override;
-  double last_trace_ms() override;
-  std::optional<double> last_update_ms() override { return update_timer_.elapsed_ms(); }
+  rt::GpuTicket trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                     uint32_t capacity) override;
+  rt::GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                 uint32_t capacity) override;
+  bool traces_hit_shadows() const override { return true; }
+  rt::HitAndShadowTickets trace_closest_and_hit_shadows_device(const accel::Ray* rays, accel::Hit* hits,
+                                                               const uint32_t* ray_count, uint32_t capacity,
+                                                               const rt::HitShadowRays& shadows) override;
+  std::optional<double> gpu_ms(rt::GpuTicket ticket, bool wait) override;
+  std::optional<rt::GpuTicket> last_update() const override { return last_update_; }
   vec3* device_positions(uint32_t mesh) override;
   void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 
@@ -121,18 +113,29 @@ private:
   // measure_sah: also measure its SAH cost now (the automatic policy reads it at the next update).
   void refit_mesh(uint32_t m, bool measure_sah);
   void upload_blas_views();
+  // The update of the dirty meshes' BLASes and the TLAS, timed (last_update_).
   void update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
+  void enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   accel::TlasView tlas_view() const {
     return {tlas_.view(), instances_.device(), blas_views_.device()};
   }
+  // Host-side traces: waits for the trace and throws when its traversal stack overflowed.
   void check_overflow() const;
-  // Either output (hits: closest hit; occluded: any hit), the other null.
+  // Either output (hits: closest hit; occluded: any hit), the other null; `overflow`: a device word
+  // zeroed before the launch.
   TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, uint32_t* occluded, const uint32_t* ray_count,
-                           uint32_t capacity) const {
-    TraceLaunch launch{rays, hits, ray_count, capacity, overflow_.data(), next_ray_.data(), options_.cuda_trace_kernel};
+                           uint32_t capacity, uint32_t* overflow) const {
+    TraceLaunch launch{rays, hits, ray_count, capacity, overflow, next_ray_.data(), options_.cuda_trace_kernel};
     launch.occluded = occluded;
     return launch;
   }
+  // Enqueued GPU work between the events of a new ticket, given the ticket's zeroed overflow word
+  // (a trace sets it), which is copied to pinned memory behind the work for gpu_ms to check once the
+  // GPU is past the ticket.
+  template <typename Work>
+  rt::GpuTicket timed(Work&& work);
+  // The ring slot's overflow word on the device (host-side traces use the word after the ring's).
+  uint32_t* device_overflow(std::size_t slot) const { return overflow_.data() + slot; }
   // Uploads host rays for trace_closest / trace_any (checked: as many as `results`, fewer than 2^32).
   uint32_t upload_host_rays(std::span<const accel::Ray> rays, std::size_t results, const char* result_name) const;
 
@@ -165,10 +168,13 @@ private:
   mutable DeviceBuffer<accel::Hit> host_hits_;
   mutable DeviceBuffer<uint32_t> host_occluded_;
   mutable std::vector<uint32_t> host_occluded_download_;
+  // Traversal stack overflow flags: one per slot of timed_, then one for host-side traces.
   mutable DeviceBuffer<uint32_t> overflow_;
+  mutable PinnedArray<uint32_t> host_overflow_;  // per slot of timed_: copied behind its work
   mutable DeviceBuffer<uint32_t> next_ray_;  // the persistent kernel's ray counter
-  mutable EventTimer trace_timer_;
-  mutable EventTimer update_timer_;
+  // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
+  mutable GpuTimeRing timed_{"rt cuda", kTimedSpans};
+  std::optional<rt::GpuTicket> last_update_;
 
   bool built_ = false;
   double build_ms_ = 0.0;
@@ -272,16 +278,22 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
                               instance_boxes_.data(), stream_.get());
   tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
   tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
-  overflow_.resize(1);
+  overflow_.resize(kTimedSpans + 1);
+  overflow_.fill_zero(stream_.get());
+  host_overflow_.reset(kTimedSpans);
   next_ray_.resize(1);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   build_ms_ = ms_since(start);
+  last_update_.reset();
   rebuilds_ = refits_ = 0;
   built_ = true;
 }
 
 void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
-  update_timer_.start(stream_.get());
+  last_update_ = timed([&](uint32_t*) { enqueue_update(dirty_meshes, policy); });
+}
+
+void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
   bool rebuilt_any = false;
   // Automatic: last update's SAH costs are in host memory by now (the copy was queued a frame ago),
   // so waiting for them costs nothing in a frame loop.
@@ -314,7 +326,6 @@ void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt
     sah_ready_.record(stream_.get());
     sah_copied_ = true;
   }
-  update_timer_.stop(stream_.get());
 }
 
 void CudaRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
@@ -357,14 +368,22 @@ vec3* CudaRayTracer::device_positions(uint32_t mesh) {
   return meshes_[mesh].mesh.positions.data();
 }
 
+namespace {
+
+[[noreturn]] void fail_overflow(accel::BvhBuilder builder) {
+  fail_message("rt cuda: a traversal stack overflowed (a BVH deeper than " + std::to_string(accel::kMaxBvhDepth) +
+                 " levels, from the " + std::string(accel::builder_name(builder)) +
+                 " builder); its hits are wrong: use another builder");
+}
+
+}  // namespace
+
 void CudaRayTracer::check_overflow() const {
   uint32_t overflowed = 0;
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, overflow_.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost, stream_.get()));
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, device_overflow(kTimedSpans), sizeof(uint32_t), cudaMemcpyDeviceToHost,
+                                   stream_.get()));
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
-  if (overflowed)
-    fail_message("rt cuda: a traversal stack overflowed (a BVH deeper than " + std::to_string(accel::kMaxBvhDepth) +
-                 " levels, from the " + std::string(accel::builder_name(options_.builder)) +
-                 " builder); its hits are wrong: use another builder");
+  if (overflowed) fail_overflow(options_.builder);
 }
 
 uint32_t CudaRayTracer::upload_host_rays(std::span<const accel::Ray> rays, std::size_t results,
@@ -381,11 +400,10 @@ void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<ac
   const uint32_t count = upload_host_rays(rays, hits.size(), "hits");
   if (count == 0) return;
   host_hits_.resize(count);
-  overflow_.fill_zero(stream_.get());
-  trace_timer_.start(stream_.get());
-  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count),
+  uint32_t* overflow = device_overflow(kTimedSpans);
+  GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
+  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count, overflow),
                        stream_.get());
-  trace_timer_.stop(stream_.get());
   GLINT_CUDA_CHECK(
       cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();
@@ -397,11 +415,10 @@ void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_
   if (count == 0) return;
   host_occluded_.resize(count);
   host_occluded_download_.resize(count);
-  overflow_.fill_zero(stream_.get());
-  trace_timer_.start(stream_.get());
-  launch_trace_any(tlas_view(), trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count),
+  uint32_t* overflow = device_overflow(kTimedSpans);
+  GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
+  launch_trace_any(tlas_view(), trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count, overflow),
                    stream_.get());
-  trace_timer_.stop(stream_.get());
   GLINT_CUDA_CHECK(cudaMemcpyAsync(host_occluded_download_.data(), host_occluded_.data(), count * sizeof(uint32_t),
                                    cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();  // waits for the copy
@@ -410,27 +427,56 @@ void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_
                  [](uint32_t value) { return static_cast<uint8_t>(value != 0 ? 1 : 0); });
 }
 
-void CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                                         uint32_t capacity) {
+template <typename Work>
+rt::GpuTicket CudaRayTracer::timed(Work&& work) {
+  const rt::GpuTicket ticket = timed_.start(stream_.get());
+  const std::size_t slot = timed_.slot(ticket);
+  GLINT_CUDA_CHECK(cudaMemsetAsync(device_overflow(slot), 0, sizeof(uint32_t), stream_.get()));
+  work(device_overflow(slot));
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&host_overflow_[slot], device_overflow(slot), sizeof(uint32_t),
+                                   cudaMemcpyDeviceToHost, stream_.get()));
+  timed_.stop(ticket, stream_.get());
+  return ticket;
+}
+
+rt::GpuTicket CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                                  uint32_t capacity) {
   require_built("trace_closest_device()");
-  overflow_.fill_zero(stream_.get());
-  trace_timer_.start(stream_.get());
-  launch_trace_closest(tlas_view(), trace_launch(rays, hits, nullptr, ray_count, capacity), stream_.get());
-  trace_timer_.stop(stream_.get());
+  return timed([&](uint32_t* overflow) {
+    launch_trace_closest(tlas_view(), trace_launch(rays, hits, nullptr, ray_count, capacity, overflow), stream_.get());
+  });
 }
 
-void CudaRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                                     uint32_t capacity) {
+rt::GpuTicket CudaRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                              uint32_t capacity) {
   require_built("trace_any_device()");
-  overflow_.fill_zero(stream_.get());
-  trace_timer_.start(stream_.get());
-  launch_trace_any(tlas_view(), trace_launch(rays, nullptr, occluded, ray_count, capacity), stream_.get());
-  trace_timer_.stop(stream_.get());
+  return timed([&](uint32_t* overflow) {
+    launch_trace_any(tlas_view(), trace_launch(rays, nullptr, occluded, ray_count, capacity, overflow), stream_.get());
+  });
 }
 
-double CudaRayTracer::last_trace_ms() {
-  const double ms = trace_timer_.elapsed_ms();
-  if (built_) check_overflow();
+rt::HitAndShadowTickets CudaRayTracer::trace_closest_and_hit_shadows_device(const accel::Ray* rays, accel::Hit* hits,
+                                                                            const uint32_t* ray_count,
+                                                                            uint32_t capacity,
+                                                                            const rt::HitShadowRays& shadows) {
+  require_built("trace_closest_and_hit_shadows_device()");
+  if (shadows.shadow_rays == nullptr || shadows.occluded == nullptr)
+    fail_message("rt cuda: the hits' shadow rays need device memory for the rays and their answers");
+  rt::HitAndShadowTickets tickets;
+  tickets.closest = trace_closest_device(rays, hits, ray_count, capacity);
+  tickets.shadows = timed([&](uint32_t* overflow) {
+    launch_hit_shadow_rays(tlas_view(), rays, hits, ray_count, capacity, shadows.light_position,
+                           shadows.origin_offset, shadows.shadow_rays, stream_.get());
+    launch_trace_any(tlas_view(), trace_launch(shadows.shadow_rays, nullptr, shadows.occluded, ray_count, capacity,
+                                               overflow),
+                     stream_.get());
+  });
+  return tickets;
+}
+
+std::optional<double> CudaRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
+  const std::optional<double> ms = timed_.elapsed_ms(ticket, wait);
+  if (ms && host_overflow_[timed_.slot(ticket)] != 0) fail_overflow(options_.builder);
   return ms;
 }
 
@@ -438,7 +484,7 @@ rt::RayTracerStats CudaRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = build_ms_;
-  stats.last_update_ms = update_timer_.elapsed_ms();
+  stats.last_update_ms = last_update_ ? *timed_.elapsed_ms(*last_update_, /*wait=*/true) : 0.0;
   stats.rebuilds = rebuilds_;
   stats.refits = refits_;
   if (!built_) return stats;

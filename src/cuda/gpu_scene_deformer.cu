@@ -4,6 +4,7 @@
 #include "cuda/device_query.h"
 #include "cuda/gl_buffer_interop.h"
 #include "cuda/gpu_sine_deformer.h"
+#include "cuda/gpu_time_ring.h"
 
 #include <optional>
 #include <string>
@@ -18,12 +19,10 @@ struct GpuSceneDeformer::State {
   rt::DeviceTracing* tracer = nullptr;
   cudaStream_t stream = nullptr;
   bool owns_stream = false;
-  cudaEvent_t start = nullptr, stop = nullptr;
-  bool timed = false;
+  GpuTimeRing timed{"GPU deformer"};
+  std::optional<std::uint64_t> last_apply;
 
   ~State() {
-    if (start) cudaEventDestroy(start);
-    if (stop) cudaEventDestroy(stop);
     if (owns_stream && stream) cudaStreamDestroy(stream);
   }
 };
@@ -51,8 +50,6 @@ GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers& deformers, std::uint32_
     GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&s.stream, cudaStreamNonBlocking));
     s.owns_stream = true;
   }
-  GLINT_CUDA_CHECK(cudaEventCreate(&s.start));
-  GLINT_CUDA_CHECK(cudaEventCreate(&s.stop));
 }
 
 GpuSceneDeformer::~GpuSceneDeformer() = default;
@@ -60,29 +57,27 @@ GpuSceneDeformer::~GpuSceneDeformer() = default;
 std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
   State& s = *state_;
   const float time_seconds = s.deformers->time_at(frame);
-  GLINT_CUDA_CHECK(cudaEventRecord(s.start, s.stream));
-  {
-    std::optional<ScopedInteropMap> mapped;
-    if (s.gl_vertices) mapped.emplace(*s.gl_vertices, s.stream);
-    auto* gl_vertices = mapped ? mapped->pointer<DeformedGlVertex>(0) : nullptr;
-    for (std::size_t k = 0; k < s.meshes.size(); ++k) {
-      const uint32_t mesh = s.deformers->meshes()[k];
-      vec3* positions = s.tracer ? s.tracer->device_positions(mesh) : nullptr;
-      s.meshes[k].apply(time_seconds, positions, gl_vertices ? gl_vertices + s.base_vertex[mesh] : nullptr, s.stream);
-    }
+  std::optional<ScopedInteropMap> mapped;
+  if (s.gl_vertices) mapped.emplace(*s.gl_vertices, s.stream);
+  auto* gl_vertices = mapped ? mapped->pointer<DeformedGlVertex>(0) : nullptr;
+  const std::uint64_t ticket = s.timed.start(s.stream);
+  for (std::size_t k = 0; k < s.meshes.size(); ++k) {
+    const uint32_t mesh = s.deformers->meshes()[k];
+    vec3* positions = s.tracer ? s.tracer->device_positions(mesh) : nullptr;
+    s.meshes[k].apply(time_seconds, positions, gl_vertices ? gl_vertices + s.base_vertex[mesh] : nullptr, s.stream);
   }
-  GLINT_CUDA_CHECK(cudaEventRecord(s.stop, s.stream));
-  s.timed = true;
+  s.timed.stop(ticket, s.stream);
+  s.last_apply = ticket;
   return s.deformers->meshes();
 }
 
-double GpuSceneDeformer::last_apply_ms() {
-  State& s = *state_;
-  if (!s.timed) return 0.0;
-  GLINT_CUDA_CHECK(cudaEventSynchronize(s.stop));
-  float ms = 0.0f;
-  GLINT_CUDA_CHECK(cudaEventElapsedTime(&ms, s.start, s.stop));
-  return ms;
+std::uint64_t GpuSceneDeformer::last_apply() const {
+  if (!state_->last_apply) fail_message("GPU deformer: no apply() to time yet");
+  return *state_->last_apply;
+}
+
+std::optional<double> GpuSceneDeformer::apply_ms(std::uint64_t ticket, bool wait) {
+  return state_->timed.elapsed_ms(ticket, wait);
 }
 
 GpuPosedMesh pose_mesh_on_gpu(const SineDeformer& deformer, float time_seconds) {

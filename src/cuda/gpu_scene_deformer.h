@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace glint::cuda {
@@ -40,8 +41,12 @@ public:
   // Enqueues the pose of every deformable mesh at `frame` (the CPU deformer's time) and returns the
   // meshes it changed, ascending. Returns before the GPU is done.
   std::vector<std::uint32_t> apply(int frame);
-  // GPU time of the last apply() in milliseconds (CUDA events; waits for it).
-  double last_apply_ms();
+  // The ticket of the last apply()'s kernels (not the wait for GL the mapping adds before them),
+  // for apply_ms; glint::Error before the first apply().
+  std::uint64_t last_apply() const;
+  // GPU time of that apply's kernels in milliseconds (cuda/gpu_time_ring.h: read frames later, once
+  // done; nullopt while not done and not `wait`).
+  std::optional<double> apply_ms(std::uint64_t ticket, bool wait);
 
 private:
   struct State;

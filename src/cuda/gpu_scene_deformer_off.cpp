@@ -13,7 +13,8 @@ GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers&, std::uint32_t, std::ve
 }
 GpuSceneDeformer::~GpuSceneDeformer() = default;
 std::vector<std::uint32_t> GpuSceneDeformer::apply(int) { return {}; }
-double GpuSceneDeformer::last_apply_ms() { return 0.0; }
+std::uint64_t GpuSceneDeformer::last_apply() const { return 0; }
+std::optional<double> GpuSceneDeformer::apply_ms(std::uint64_t, bool) { return std::nullopt; }
 
 GpuPosedMesh pose_mesh_on_gpu(const SineDeformer&, float) {
   fail("the GPU deformer: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");

@@ -37,6 +37,13 @@ void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch
 // mode). Asynchronous on `stream`.
 void launch_trace_any(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
 
+// shadow_rays[i] = rt::hit_shadow_ray of reflection ray i and its closest hit hits[i] (the hit
+// triangle from `tlas`'s instances and meshes), towards `light`, for i < min(*ray_count, capacity)
+// (ray_count may be null: `capacity`). Slots past the count are not written. Asynchronous on `stream`.
+void launch_hit_shadow_rays(const accel::TlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
+                            const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
+                            accel::Ray* shadow_rays, cudaStream_t stream);
+
 // Through one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
 void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream);
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "cuda/cuda_stream_events.h"
+#include "cuda/gpu_time_ring.h"
 #include "optix/result_check.h"
 #include "optix/device_context.h"
 #include "optix/host_trace.h"
@@ -40,7 +41,9 @@ struct OptixRayTracer::State {
   DeviceContext context;
   TraceClosestPipeline pipeline{context.get(), context.validation()};
   cuda::CudaStream stream;
-  cuda::CudaEvent update_start, update_end, trace_start, trace_end;
+  // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
+  cuda::GpuTimeRing timed{"rt optix"};
+  std::optional<rt::GpuTicket> last_update;
 
   rt::OptixBuildPreference preference = rt::OptixBuildPreference::fast_trace;
   std::vector<MeshStructure> meshes;
@@ -53,8 +56,6 @@ struct OptixRayTracer::State {
   bool built = false;
 
   double build_ms = 0.0;
-  bool update_recorded = false;
-  bool trace_recorded = false;
   std::size_t rebuilds = 0, refits = 0;
 
   std::mutex host_trace_mutex;  // trace_closest is const and may be called from several threads
@@ -65,16 +66,16 @@ struct OptixRayTracer::State {
   }
 
   // A device-side query (`params` names its output) over the IAS, between the trace events.
-  void launch_device(OptixLaunchParams& params, const accel::Ray* rays, const std::uint32_t* ray_count,
-                     std::uint32_t capacity) {
+  rt::GpuTicket launch_device(OptixLaunchParams& params, const accel::Ray* rays, const std::uint32_t* ray_count,
+                              std::uint32_t capacity) {
     params.root = ias.handle();
     params.rays = as_ray_records(rays);
     params.ray_count = ray_count;
     params.capacity = capacity;
-    trace_start.record(stream.get());
+    const rt::GpuTicket ticket = timed.start(stream.get());
     pipeline.launch(params, stream.get());
-    trace_end.record(stream.get());
-    trace_recorded = true;
+    timed.stop(ticket, stream.get());
+    return ticket;
   }
 
   // Dirty GASes rebuilt or refitted, then the IAS rebuilt over the (possibly new) GAS handles; all
@@ -164,7 +165,7 @@ void OptixRayTracer::build(const Scene& scene, const rt::AccelOptions& options) 
   s.ias.build(context, s.instances, ias_build_flags(s.preference), s.scratch, stream);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
   s.build_ms = ms_since(start);
-  s.update_recorded = false;
+  s.last_update.reset();
   s.rebuilds = s.refits = 0;
   s.built = true;
 }
@@ -174,14 +175,14 @@ void OptixRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_
   s.require_built("update()");
   rt::check_update(name(), s.shape, scene, dirty_meshes);
   const cudaStream_t stream = s.stream.get();
-  s.update_start.record(stream);
+  const rt::GpuTicket ticket = s.timed.start(stream);
   for (const std::uint32_t m : dirty_meshes) s.meshes[m].gas.upload_positions(scene.meshes[m].positions, stream);
   // Transforms may have moved too (animated instances): re-read them all, the IAS is small.
   for (std::size_t i = 0; i < scene.instances.size(); ++i)
     s.instances[i] = make_instance(scene.instances[i].transform, static_cast<unsigned int>(i), 0);
   s.update_structures(dirty_meshes, policy);
-  s.update_end.record(stream);
-  s.update_recorded = true;
+  s.timed.stop(ticket, stream);
+  s.last_update = ticket;
   // The copies read `scene`'s vertices, which the caller may change once this returns.
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
 }
@@ -205,7 +206,7 @@ rt::RayTracerStats OptixRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = s.build_ms;
-  stats.last_update_ms = s.update_recorded ? cuda::elapsed_ms(s.update_start, s.update_end) : 0.0;
+  stats.last_update_ms = s.last_update ? *s.timed.elapsed_ms(*s.last_update, /*wait=*/true) : 0.0;
   stats.rebuilds = s.rebuilds;
   stats.refits = s.refits;
   std::uint64_t bytes = s.ias.bytes();
@@ -216,34 +217,29 @@ rt::RayTracerStats OptixRayTracer::stats() const {
 
 void* OptixRayTracer::stream() { return state_->stream.get(); }
 
-void OptixRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                                          uint32_t capacity) {
+rt::GpuTicket OptixRayTracer::trace_closest_device(const accel::Ray* rays, accel::Hit* hits,
+                                                   const uint32_t* ray_count, uint32_t capacity) {
   State& s = *state_;
   s.require_built("trace_closest_device()");
   OptixLaunchParams params;
   params.hits = as_hit_records(hits);
-  s.launch_device(params, rays, ray_count, capacity);
+  return s.launch_device(params, rays, ray_count, capacity);
 }
 
-void OptixRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                                      uint32_t capacity) {
+rt::GpuTicket OptixRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                               uint32_t capacity) {
   State& s = *state_;
   s.require_built("trace_any_device()");
   OptixLaunchParams params;
   params.occluded = occluded;
-  s.launch_device(params, rays, ray_count, capacity);
+  return s.launch_device(params, rays, ray_count, capacity);
 }
 
-double OptixRayTracer::last_trace_ms() {
-  State& s = *state_;
-  return s.trace_recorded ? cuda::elapsed_ms(s.trace_start, s.trace_end) : 0.0;
+std::optional<double> OptixRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
+  return state_->timed.elapsed_ms(ticket, wait);
 }
 
-std::optional<double> OptixRayTracer::last_update_ms() {
-  State& s = *state_;
-  if (!s.update_recorded) return std::nullopt;
-  return cuda::elapsed_ms(s.update_start, s.update_end);
-}
+std::optional<rt::GpuTicket> OptixRayTracer::last_update() const { return state_->last_update; }
 
 vec3* OptixRayTracer::device_positions(uint32_t mesh) {
   State& s = *state_;
@@ -257,10 +253,10 @@ void OptixRayTracer::update_device(std::span<const uint32_t> dirty_meshes, rt::U
   s.require_built("update_device()");
   for (const std::uint32_t m : dirty_meshes)
     if (m >= s.meshes.size()) fail("rt optix: dirty mesh {} of {}", m, s.meshes.size());
-  s.update_start.record(s.stream.get());
+  const rt::GpuTicket ticket = s.timed.start(s.stream.get());
   s.update_structures(dirty_meshes, policy);
-  s.update_end.record(s.stream.get());
-  s.update_recorded = true;
+  s.timed.stop(ticket, s.stream.get());
+  s.last_update = ticket;
 }
 
 }  // namespace glint::optix

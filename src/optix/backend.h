@@ -39,12 +39,12 @@ public:
   rt::DeviceTracing* device_tracing() override { return this; }
 
   void* stream() override;
-  void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                            uint32_t capacity) override;
-  void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                        uint32_t capacity) override;
-  double last_trace_ms() override;
-  std::optional<double> last_update_ms() override;
+  rt::GpuTicket trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                     uint32_t capacity) override;
+  rt::GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                 uint32_t capacity) override;
+  std::optional<double> gpu_ms(rt::GpuTicket ticket, bool wait) override;
+  std::optional<rt::GpuTicket> last_update() const override;
   vec3* device_positions(uint32_t mesh) override;
   void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 

@@ -113,14 +113,8 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   if (shadow_rays_) {
     // rt shadows need no cube map: reflection hits cast shadow rays too.
     shadow.cube = settings_.shadows.method == ShadowMethod::hybrid;
-    shadow.after_cube = [&] {
-      if (ray_traced_) ray_traced_->collect_trace_time();  // before the shared tracer's events are reused
-      shadow_rays_->run(raster_);
-    };
+    shadow.after_cube = [&] { shadow_rays_->run(raster_); };
   }
-  // The primary rays trace first on the shared tracer: the last frame's reflection trace time is
-  // read before they overwrite its events.
-  if (ray_traced_ && settings_.raster.primary == PrimaryVisibility::rt) ray_traced_->collect_trace_time();
   raster_.render(frame, timer, shadow);
   if (ssr_) {
     run_timed_pass(timer, "ssr", [&] {

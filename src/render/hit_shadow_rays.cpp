@@ -17,6 +17,8 @@ constexpr GLuint kWorkGroupSize = 64;  // local_size_x in hit_shadow_rays.comp.g
 
 HitShadowRays::HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset)
     : buffers_(capacity, tracer, "reflection shadow rays"),
+      origin_offset_(origin_offset),
+      traced_with_hits_(tracer.device_tracing() != nullptr && tracer.device_tracing()->traces_hit_shadows()),
       program_(ShaderProgram::from_embedded({"hit_shadow_rays.comp.glsl"})) {
   if (!(origin_offset >= 0.0f) || !std::isfinite(origin_offset))
     fail("reflection shadow rays: origin offset {} must be finite and >= 0", origin_offset);
@@ -29,7 +31,7 @@ void HitShadowRays::run(RayHitBuffers& buffers, const GpuScene& scene, GLuint fr
   GlPassScope scope("hit_shadow_rays");
   if (max_rays > buffers_.capacity())
     fail("reflection shadow rays: {} rays, more than the capacity {}", max_rays, buffers_.capacity());
-  if (max_rays == 0) return;
+  if (max_rays == 0 || traced_with_hits_) return;
   scene.bind_resources();
   buffers.bind();
   buffers_.bind();

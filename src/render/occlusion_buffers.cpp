@@ -74,6 +74,11 @@ void OcclusionBuffers::trace(std::size_t host_count) {
     tracer_->trace_any({mapped_rays_, host_count}, {mapped_occluded_, host_count});
 }
 
+cuda::ScopedInteropMap OcclusionBuffers::map_for_cuda() {
+  if (!device_) fail("{}: a CPU backend's rays are not shared with CUDA", what_);
+  return cuda::ScopedInteropMap(*interop_, device_->stream());
+}
+
 std::span<const accel::Ray> OcclusionBuffers::rays() const {
   if (mapped_rays_ == nullptr) fail("{}: the rays of a GPU backend stay in GPU memory", what_);
   return {mapped_rays_, capacity_};

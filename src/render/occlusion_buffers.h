@@ -51,6 +51,11 @@ public:
   // all `capacity` on the tracer's stream (rays past the frame's count must be empty).
   void trace(std::size_t host_count);
 
+  // GPU backends: rays (pointer 0), answers (1) and count (2) mapped into CUDA on the tracer's
+  // stream until the returned map goes, for CUDA work the caller enqueues itself (RayTracedReflections
+  // traces the hits' shadow rays with the hits); glint::Error for a CPU backend.
+  cuda::ScopedInteropMap map_for_cuda();
+
   // CPU backends: the rays and answers of the last trace, for tests; glint::Error for a GPU backend.
   std::span<const accel::Ray> rays() const;
   std::span<const std::uint8_t> occluded() const;

@@ -78,7 +78,7 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
   });
   // A CPU backend needs the list in host memory now; a GPU backend reads the count on the GPU.
   const RayListCounts host_counts = device_ ? RayListCounts{} : buffers_.finish_ray_list(slot);
-  trace(host_counts, slot);
+  trace(host_counts, slot, raster.frame_constants().light_position_range);
   const auto max_rays = static_cast<std::uint32_t>(device_ ? buffers_.capacity() : host_counts.rays);
   run_timed_pass(timer, "hit_shade", [&] {
     // The hits' shadow rays are part of shading them (a CPU backend waits for their list here).
@@ -91,7 +91,7 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
   ++runs_;
 }
 
-void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot) {
+void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot, vec3 light_position) {
   if (!device_) {
     RayTraceFrameStats& stats = slot_stats_[slot];
     stats = {host_counts.rays, host_counts.reflective, 0.0};
@@ -100,13 +100,21 @@ void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot) {
     stats.trace_ms = milliseconds_since(trace_start);
     return;
   }
-  collect_trace_time();
   // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the
   // trace. Both happen on the GPU: the host only enqueues.
   cuda::ScopedInteropMap mapped(*interop_, device_->stream());
-  device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
-                                mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(buffers_.capacity()));
-  trace_time_pending_ = runs_;
+  const auto* rays = mapped.pointer<const accel::Ray>(0);
+  auto* hits = mapped.pointer<accel::Hit>(1);
+  const auto* count = mapped.pointer<const std::uint32_t>(2);
+  const auto capacity = static_cast<std::uint32_t>(buffers_.capacity());
+  if (hit_shadows_ && hit_shadows_->traced_with_hits()) {
+    cuda::ScopedInteropMap shadow = hit_shadows_->answers().map_for_cuda();
+    const rt::HitShadowRays request{light_position, hit_shadows_->origin_offset(), shadow.pointer<accel::Ray>(0),
+                                    shadow.pointer<std::uint32_t>(1)};
+    trace_tickets_[slot] = device_->trace_closest_and_hit_shadows_device(rays, hits, count, capacity, request).closest;
+  } else {
+    trace_tickets_[slot] = device_->trace_closest_device(rays, hits, count, capacity);
+  }
 }
 
 std::optional<RayTraceFrameStats> RayTracedReflections::take_stats(std::uint64_t run, bool wait) {
@@ -114,20 +122,10 @@ std::optional<RayTraceFrameStats> RayTracedReflections::take_stats(std::uint64_t
   if (!device_) return slot_stats_[slot];
   const std::optional<RayListCounts> counts = buffers_.requested_counts(slot, wait);
   if (!counts) return std::nullopt;
-  if (trace_time_pending_ == run) {  // the GPU passed the frame's hit shading, so its trace has ended
-    slot_stats_[slot].trace_ms = device_->last_trace_ms();
-    trace_time_pending_.reset();
-  }
-  return RayTraceFrameStats{counts->rays, counts->reflective, slot_stats_[slot].trace_ms};
-}
-
-void RayTracedReflections::collect_trace_time() {
-  // The tracer keeps one pair of CUDA events: the previous run's trace time is read before the next
-  // trace overwrites it. That waits for the previous frame's trace only, which the GPU reaches
-  // before this frame's work, so the GPU never runs dry here.
-  if (!device_ || !trace_time_pending_) return;
-  slot_stats_[slot_of(*trace_time_pending_)].trace_ms = device_->last_trace_ms();
-  trace_time_pending_.reset();
+  // The GPU passed the frame's hit shading, so its trace has ended: the time is there.
+  const std::optional<double> trace_ms = device_->gpu_ms(trace_tickets_[slot], wait);
+  if (!trace_ms) return std::nullopt;
+  return RayTraceFrameStats{counts->rays, counts->reflective, *trace_ms};
 }
 
 RayTraceFrameStats RayTracedReflections::frame_stats() {

@@ -84,9 +84,6 @@ public:
   std::optional<RayTraceFrameStats> take_stats(std::uint64_t run, bool wait);
   // The statistics of the last run(); with a GPU backend, waits for that frame's GPU work first.
   RayTraceFrameStats frame_stats();
-  // GPU backend: reads the last run's trace time from the tracer's CUDA events (waiting for that
-  // trace), before another trace on the shared tracer (shadow rays) overwrites them. Else nothing.
-  void collect_trace_time();
 
   const rt::RayTracer& tracer() const { return *tracer_; }
   rt::RayTracer& tracer() { return *tracer_; }
@@ -99,21 +96,20 @@ public:
 
 private:
   RayTracingSettings settings_;
-  // Traces this frame's list; CPU backends: records the stats, GPU backends: leaves them pending.
-  void trace(RayListCounts host_counts, std::size_t slot);
+  // Traces this frame's list (with a GPU backend that can, the hits' shadow rays towards
+  // `light_position` too); CPU backends: records the stats, GPU backends: the trace's ticket.
+  void trace(RayListCounts host_counts, std::size_t slot, vec3 light_position);
   std::size_t slot_of(std::uint64_t run) const;
 
   rt::RayTracer* tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
   RayHitBuffers buffers_;
   std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only
-  // Per readback slot (run % kFramesInFlight): CPU backends' statistics, or a GPU backend's trace
-  // time once read (the counters are in buffers_' slot).
+  // Per readback slot (run % kFramesInFlight): CPU backends' statistics; a GPU backend's trace
+  // ticket, whose time is read with the slot's counters (in buffers_' slot) once the GPU is done.
   std::array<RayTraceFrameStats, kFramesInFlight> slot_stats_{};
+  std::array<rt::GpuTicket, kFramesInFlight> trace_tickets_{};
   std::uint64_t runs_ = 0;
-  // GPU backend: the run whose trace time is still in the tracer's CUDA events (read before the next
-  // trace overwrites them).
-  std::optional<std::uint64_t> trace_time_pending_;
   RayListPass ray_list_;
   std::optional<HitShadowRays> hit_shadows_;  // with shadow rays
   HitShadingPass hit_shading_;

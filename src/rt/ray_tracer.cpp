@@ -13,6 +13,12 @@ namespace glint::rt {
 RayTracer::~RayTracer() = default;
 DeviceTracing::~DeviceTracing() = default;
 
+HitAndShadowTickets DeviceTracing::trace_closest_and_hit_shadows_device(const accel::Ray*, accel::Hit*,
+                                                                        const uint32_t*, uint32_t,
+                                                                        const HitShadowRays&) {
+  fail("this GPU backend traces the reflection hits' shadow rays only after a GL pass wrote them");
+}
+
 std::string_view update_policy_name(UpdatePolicy policy) {
   switch (policy) {
     case UpdatePolicy::rebuild: return "rebuild";

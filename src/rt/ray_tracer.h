@@ -105,6 +105,31 @@ public:
   virtual DeviceTracing* device_tracing() { return nullptr; }
 };
 
+// A timed piece of GPU work a DeviceTracing call enqueued (a trace, an update): its GPU time is read
+// with gpu_ms() once the GPU has done it, frames later (cuda/gpu_time_ring.h).
+using GpuTicket = std::uint64_t;
+
+// The shadow rays of reflection hits, traced in the same enqueued work as the hits themselves (no GL
+// pass between the two traces; see DeviceTracing::trace_closest_and_hit_shadows_device). For every
+// slot i < *ray_count with a hit, shadow_rays[i] is the ray from the hit towards `light_position`
+// by the rule of shaders/hit_shadow_rays.comp.glsl (the hit point offset by `origin_offset` along
+// the triangle's geometric normal turned towards the reflection ray's origin; t in [0, 1 - 1e-4],
+// the light at t = 1; an empty ray (t_min > t_max) for a miss or a hit facing away from the light),
+// and occluded[i] its trace_any_device answer. Both are device pointers of `capacity` slots.
+struct HitShadowRays {
+  vec3 light_position{0.0f};
+  float origin_offset = 0.0f;
+  accel::Ray* shadow_rays = nullptr;
+  uint32_t* occluded = nullptr;
+};
+
+// The tickets of trace_closest_and_hit_shadows_device: the closest-hit trace, then the shadow rays'
+// generation and occlusion trace.
+struct HitAndShadowTickets {
+  GpuTicket closest = 0;
+  GpuTicket shadows = 0;
+};
+
 // The device-resident side of a GPU backend: the hybrid renderer hands it GL buffers mapped into
 // CUDA, so rays, hits and vertices never travel through the host during a frame. Every call is
 // enqueued on the backend's CUDA stream (stream()) and returns without waiting for the GPU.
@@ -118,17 +143,27 @@ public:
   // hits[i] = closest hit of rays[i] for i < *ray_count (a device-memory counter, read on the GPU,
   // so the host never waits for it); rays, hits and ray_count are device pointers, and at most
   // `capacity` rays are traced. Same hit convention as RayTracer::trace_closest.
-  virtual void trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                                    uint32_t capacity) = 0;
+  virtual GpuTicket trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
+                                         uint32_t capacity) = 0;
   // The occlusion query of RayTracer::trace_any on device memory: occluded[i] = 1 when rays[i] hits
   // any triangle within [t_min, t_max], else 0, for i < *ray_count (read on the GPU, at most
   // `capacity`), one uint32_t per ray so a GLSL shader reads it as a `uint` array through a shared
   // GL buffer. Slots at or past the count are not written. Enqueued like trace_closest_device.
-  virtual void trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                                uint32_t capacity) = 0;
-  // GPU time of the last trace_closest_device or trace_any_device in milliseconds (CUDA events;
-  // waits for it to end).
-  virtual double last_trace_ms() = 0;
+  virtual GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
+                                     uint32_t capacity) = 0;
+  // Whether trace_closest_and_hit_shadows_device exists here; without it the caller writes the hits'
+  // shadow rays in a GL pass and traces them with trace_any_device (one more GL-CUDA hand-over).
+  virtual bool traces_hit_shadows() const { return false; }
+  // trace_closest_device, then the hits' shadow rays (HitShadowRays) written and traced, all on the
+  // stream. glint::Error where traces_hit_shadows() is false.
+  virtual HitAndShadowTickets trace_closest_and_hit_shadows_device(const accel::Ray* rays, accel::Hit* hits,
+                                                                   const uint32_t* ray_count, uint32_t capacity,
+                                                                   const HitShadowRays& shadows);
+  // GPU time in milliseconds of the work `ticket` names (a trace or an update; CUDA events). nullopt
+  // while the GPU has not finished it and `wait` is false (wait: blocks until it has). Also reports
+  // what the work found wrong (a traversal stack overflow) as glint::Error; and glint::Error for a
+  // ticket older than the backend keeps (64 timed pieces of work).
+  virtual std::optional<double> gpu_ms(GpuTicket ticket, bool wait) = 0;
 
   // Object-space positions of mesh `mesh` in device memory (vertex_count vec3, the backend's own
   // copy), for a GPU deformer to overwrite before update_device(); glint::Error out of range.
@@ -136,9 +171,10 @@ public:
   // Like RayTracer::update, after a GPU deformer rewrote device_positions() of `dirty_meshes`:
   // nothing is copied from the host.
   virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
-  // GPU time of the last update or update_device in milliseconds (CUDA events; waits for it), or
-  // nullopt when the backend does not time it. The host time of those calls is only their enqueueing.
-  virtual std::optional<double> last_update_ms() { return std::nullopt; }
+  // The ticket of the last update or update_device (its GPU time through gpu_ms), or nullopt before
+  // the first or when the backend does not time it. The host time of those calls is only their
+  // enqueueing.
+  virtual std::optional<GpuTicket> last_update() const { return std::nullopt; }
 };
 
 // "cpu", "embree", "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU) or "optix"

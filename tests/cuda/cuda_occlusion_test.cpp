@@ -4,6 +4,7 @@
 // GPU. Needs a CUDA GPU; skipped elsewhere.
 #include "cuda/device_query.h"
 #include "rt/ray_tracer.h"
+#include "rt/hit_shadow_ray.h"
 #include "rt/ray_tracer_check.h"
 #include "rt/reflection_rays.h"
 #include "scene/sine_deformer.h"
@@ -150,10 +151,13 @@ TEST(CudaRayTracerOcclusion, DeviceQueryReadsTheRayCountOnTheGpu) {
     ASSERT_EQ(cudaMemcpy(device_occluded, std::vector<uint32_t>(rays.size(), kSentinel).data(),
                          rays.size() * sizeof(uint32_t), cudaMemcpyHostToDevice),
               cudaSuccess);
-    device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
+    const GpuTicket first =
+        device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
     device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
-    device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
-    EXPECT_GE(device->last_trace_ms(), 0.0);  // waits for the last launch
+    const GpuTicket last =
+        device->trace_any_device(device_rays, device_occluded, device_count, static_cast<uint32_t>(rays.size()));
+    EXPECT_GE(*device->gpu_ms(last, /*wait=*/true), 0.0);  // waits for the last launch
+    EXPECT_GE(*device->gpu_ms(first, /*wait=*/false), 0.0) << "an earlier trace keeps its own time";
     const std::vector<uint32_t> occluded = host_copy(device_occluded, rays.size());
     const std::vector<accel::Hit> hits = host_copy(device_hits, traced);
     std::vector<uint8_t> traced_occluded(traced);
@@ -171,6 +175,97 @@ TEST(CudaRayTracerOcclusion, DeviceQueryReadsTheRayCountOnTheGpu) {
   cudaFree(device_occluded);
   cudaFree(device_hits);
   cudaFree(device_count);
+}
+
+// The reflection hits' shadow rays traced with the hits (what the renderer does with rt shadows):
+// slot i's shadow ray is rt::hit_shadow_ray of ray i's hit, computed here on the host from the scene,
+// and its answer is the brute-force occlusion of that ray; slots past the count are not written.
+TEST(CudaRayTracerOcclusion, HitShadowRaysAreTracedWithTheHits) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  Scene scene = testing::make_instanced_scene();
+  SceneDeformers(scene).apply(scene, 23);  // bent meshes: hits on every side of the light
+  const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 3000, 11);
+  const auto capacity = static_cast<uint32_t>(rays.size());
+  const uint32_t traced = capacity - 101;
+  const vec3 light = scene.world_bounds().center() + vec3(0.0f, 0.3f, 0.1f) * length(scene.world_bounds().extent());
+  const float offset = 1e-4f * length(scene.world_bounds().extent());
+  const auto tracer = make_ray_tracer("cuda");
+  tracer->build(scene, {});
+  DeviceTracing* device = tracer->device_tracing();
+  ASSERT_TRUE(device->traces_hit_shadows());
+  accel::Ray* device_rays = device_copy(rays);
+  accel::Hit* device_hits = device_copy(std::vector<accel::Hit>(rays.size()));
+  uint32_t* device_count = device_copy(std::vector<uint32_t>{traced});
+  accel::Ray sentinel_ray;
+  sentinel_ray.t_min = -9.0f;
+  accel::Ray* device_shadow_rays = device_copy(std::vector<accel::Ray>(rays.size(), sentinel_ray));
+  constexpr uint32_t kSentinel = 0xDEADBEEFu;
+  uint32_t* device_occluded = device_copy(std::vector<uint32_t>(rays.size(), kSentinel));
+  const HitAndShadowTickets tickets = device->trace_closest_and_hit_shadows_device(
+      device_rays, device_hits, device_count, capacity, {light, offset, device_shadow_rays, device_occluded});
+  EXPECT_GE(*device->gpu_ms(tickets.shadows, /*wait=*/true), 0.0);
+  EXPECT_GE(*device->gpu_ms(tickets.closest, /*wait=*/false), 0.0);
+  const std::vector<accel::Hit> hits = host_copy(device_hits, traced);
+  const std::vector<accel::Ray> shadow_rays = host_copy(device_shadow_rays, rays.size());
+  const std::vector<uint32_t> occluded = host_copy(device_occluded, rays.size());
+  const std::span<const accel::Ray> traced_rays(rays.data(), traced);
+  EXPECT_EQ(testing::compare_hits(scene, traced_rays, testing::brute_force_hits(scene, traced_rays), hits), "");
+  int cast = 0;
+  for (uint32_t i = 0; i < traced; ++i) {
+    accel::Ray expected = empty_shadow_ray();
+    if (hits[i].valid()) {
+      const Instance& instance = scene.instances[hits[i].instance];
+      const Mesh& mesh = scene.meshes[instance.mesh];
+      const auto corner = [&](int k) {
+        return vec3(instance.transform * vec4(mesh.positions[mesh.indices[3 * hits[i].prim + k]], 1.0f));
+      };
+      expected = hit_shadow_ray(rays[i], hits[i].u, hits[i].v, corner(0), corner(1), corner(2), light, offset);
+    }
+    ASSERT_EQ(expected.t_min > expected.t_max, shadow_rays[i].t_min > shadow_rays[i].t_max) << "slot " << i;
+    ASSERT_LT(length(expected.origin - shadow_rays[i].origin), 1e-5f * length(scene.world_bounds().extent()))
+        << "slot " << i;
+    cast += expected.t_min <= expected.t_max;
+  }
+  EXPECT_GT(cast, static_cast<int>(traced) / 4);
+  const std::span<const accel::Ray> traced_shadow_rays(shadow_rays.data(), traced);
+  std::vector<uint8_t> answers(traced);
+  for (uint32_t i = 0; i < traced; ++i) {
+    ASSERT_LE(occluded[i], 1u) << "slot " << i;
+    answers[i] = static_cast<uint8_t>(occluded[i]);
+  }
+  EXPECT_EQ(compare_occluded(traced_shadow_rays, brute_force_occluded(scene, traced_shadow_rays), answers), "");
+  for (uint32_t i = traced; i < capacity; ++i) {
+    ASSERT_EQ(occluded[i], kSentinel) << "slot " << i << " past the count";
+    ASSERT_EQ(shadow_rays[i].t_min, -9.0f) << "slot " << i << " past the count";
+  }
+  for (void* pointer : std::initializer_list<void*>{device_rays, device_hits, device_count, device_shadow_rays,
+                                                    device_occluded})
+    cudaFree(pointer);
+}
+
+// Every device-side trace and update keeps its GPU time under its own ticket until 64 newer ones
+// took its slot; then asking for it is a clear error, not another trace's time.
+TEST(CudaRayTracerOcclusion, GpuTimesAreKeptPerTicket) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const Scene scene = testing::make_instanced_scene();
+  const auto tracer = make_ray_tracer("cuda");
+  tracer->build(scene, {});
+  DeviceTracing* device = tracer->device_tracing();
+  const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 64, 3);
+  accel::Ray* device_rays = device_copy(rays);
+  uint32_t* device_occluded = device_copy(std::vector<uint32_t>(rays.size(), 0));
+  const auto count = static_cast<uint32_t>(rays.size());
+  std::vector<GpuTicket> tickets;
+  for (int i = 0; i < 70; ++i) tickets.push_back(device->trace_any_device(device_rays, device_occluded, nullptr, count));
+  EXPECT_GE(*device->gpu_ms(tickets.back(), /*wait=*/true), 0.0);
+  EXPECT_GE(*device->gpu_ms(tickets[10], /*wait=*/true), 0.0);
+  EXPECT_NE(testing::error_of([&] { (void)device->gpu_ms(tickets[0], true); }).find("the last 64 are kept"),
+            std::string::npos);
+  EXPECT_NE(testing::error_of([&] { (void)device->gpu_ms(tickets.back() + 1, true); }).find("asked after"),
+            std::string::npos);
+  EXPECT_FALSE(device->last_update().has_value());
+  cudaFree(device_rays);
+  cudaFree(device_occluded);
 }
 #endif
 

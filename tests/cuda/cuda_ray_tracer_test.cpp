@@ -215,8 +215,9 @@ TEST(CudaRayTracer, DeviceTraceReadsTheRayCountOnTheGpu) {
   sentinel.t = -7.0f;
   accel::Hit* device_hits = device_copy(std::vector<accel::Hit>(rays.size(), sentinel));
   uint32_t* device_count = device_copy(std::vector<uint32_t>{traced});
-  device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
-  EXPECT_GE(device->last_trace_ms(), 0.0);  // waits for the trace
+  const GpuTicket ticket =
+      device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
+  EXPECT_GE(*device->gpu_ms(ticket, /*wait=*/true), 0.0);  // waits for the trace
   const std::vector<accel::Hit> hits = host_copy(device_hits, rays.size());
   const std::span<const accel::Ray> traced_rays(rays.data(), traced);
   const std::vector<accel::Hit> expected = brute_force_hits(scene, traced_rays);
@@ -229,8 +230,9 @@ TEST(CudaRayTracer, DeviceTraceReadsTheRayCountOnTheGpu) {
   const std::vector<accel::Hit> sentinels(rays.size(), sentinel);
   ASSERT_EQ(cudaMemcpy(device_hits, sentinels.data(), rays.size() * sizeof(accel::Hit), cudaMemcpyHostToDevice),
             cudaSuccess);
-  device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
-  EXPECT_GE(device->last_trace_ms(), 0.0);
+  const GpuTicket persistent_ticket =
+      device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
+  EXPECT_GE(*device->gpu_ms(persistent_ticket, /*wait=*/true), 0.0);
   const std::vector<accel::Hit> persistent_hits = host_copy(device_hits, rays.size());
   EXPECT_EQ(compare_hits(scene, traced_rays, expected, std::span<const accel::Hit>(persistent_hits.data(), traced)),
             "");

@@ -143,9 +143,9 @@ TEST(OptixRayTracerOcclusion, DeviceQueryStopsAtTheGpuSideRayCount) {
   const auto capacity = static_cast<uint32_t>(rays.size());
   device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity);
   device.trace_closest_device(device_rays.data(), device_hits.data(), count.data(), capacity);
-  device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity);
+  const GpuTicket last = device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity);
   ASSERT_EQ(cudaStreamSynchronize(static_cast<cudaStream_t>(device.stream())), cudaSuccess);
-  EXPECT_GE(device.last_trace_ms(), 0.0);
+  EXPECT_GE(*device.gpu_ms(last, /*wait=*/true), 0.0);
   const std::vector<uint32_t> occluded = device_occluded.download();
   const std::vector<accel::Hit> hits = device_hits.download();
   for (std::size_t i = 0; i < rays.size(); ++i) {

@@ -184,11 +184,12 @@ TEST(OptixRayTracer, DeviceTraceStopsAtTheGpuSideRayCount) {
   ASSERT_EQ(cudaMemset(device_hits.data(), 0xAB, device_hits.bytes()), cudaSuccess);
   cuda::DeviceBuffer<uint32_t> count;
   count.upload(std::span<const uint32_t>(&traced, 1));
+  GpuTicket last = 0;
   for (int repeat = 0; repeat < 2; ++repeat)  // the second launch reuses the uploaded parameters
-    device.trace_closest_device(device_rays.data(), device_hits.data(), count.data(),
-                                static_cast<uint32_t>(rays.size()));
+    last = device.trace_closest_device(device_rays.data(), device_hits.data(), count.data(),
+                                       static_cast<uint32_t>(rays.size()));
   ASSERT_EQ(cudaStreamSynchronize(static_cast<cudaStream_t>(device.stream())), cudaSuccess);
-  EXPECT_GE(device.last_trace_ms(), 0.0);
+  EXPECT_GE(*device.gpu_ms(last, /*wait=*/true), 0.0);
   const std::vector<accel::Hit> hits = device_hits.download();
   unsigned char untouched[sizeof(accel::Hit)];
   std::memset(untouched, 0xAB, sizeof(untouched));

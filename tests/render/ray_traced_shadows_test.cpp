@@ -4,6 +4,7 @@
 // meshes, and hybrid differs from rt on a bounded fraction of an atrium-simple frame.
 #include "cuda/device_query.h"
 #include "metrics/rmse_psnr.h"
+#include "rt/hit_shadow_ray.h"
 #include "render/frame_pipeline.h"
 #include "rt/ray_tracer.h"
 #include "scene/presets.h"
@@ -223,18 +224,36 @@ TEST_F(RayTracedShadowsTest, ReflectionHitsCastShadowRays) {
   const std::vector<accel::Ray> shadow_rays(answers.rays().begin(), answers.rays().begin() + count);
   const float scale = length(atrium.scene.world_bounds().extent());
   int cast = 0;
+  int rule_disagreements = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
     if (hits[i].prim == accel::Hit::kInvalidIndex) {
       EXPECT_TRUE(empty_ray(shadow_rays[i])) << "a miss casts no shadow ray, ray " << i;
       continue;
     }
+    // The shader's rule is rt::hit_shadow_ray's, which GPU backends apply in CUDA: the same ray up to
+    // float rounding; only a hit whose triangle is edge-on to the light may tip either way.
+    const Instance& instance = atrium.scene.instances[hits[i].instance];
+    const Mesh& mesh = atrium.scene.meshes[instance.mesh];
+    const auto corner = [&](int k) {
+      return vec3(instance.transform * vec4(mesh.positions[mesh.indices[3 * hits[i].prim + k]], 1.0f));
+    };
+    const accel::Ray expected = rt::hit_shadow_ray(rays[i], hits[i].u, hits[i].v, corner(0), corner(1), corner(2),
+                                                   atrium.frame.light_position,
+                                                   reflections.hit_shadow_rays()->origin_offset());
+    if (empty_ray(expected) != empty_ray(shadow_rays[i])) {
+      ++rule_disagreements;
+      continue;
+    }
     if (empty_ray(shadow_rays[i])) continue;  // facing away from the light
     ++cast;
+    EXPECT_LT(length(shadow_rays[i].origin - expected.origin), 1e-5f * scale) << "ray " << i;
+    EXPECT_LT(length(shadow_rays[i].direction - expected.direction), 1e-5f * scale) << "ray " << i;
     const vec3 hit_point = rays[i].origin + hits[i].t * rays[i].direction;
     EXPECT_LT(length(shadow_rays[i].origin - hit_point), 1e-3f * scale) << "ray " << i;
     EXPECT_LT(length(shadow_rays[i].origin + shadow_rays[i].direction - atrium.frame.light_position), 1e-3f * scale);
   }
   EXPECT_GT(cast, static_cast<int>(count) / 4);
+  EXPECT_LE(rule_disagreements, static_cast<int>(count) / 1000) << "the shader and rt::hit_shadow_ray disagree";
   const std::vector<std::uint8_t> expected = testing::trace_occluded(*reference, shadow_rays);
   const std::vector<std::uint8_t> actual(answers.occluded().begin(), answers.occluded().begin() + count);
   EXPECT_EQ(testing::compare_occluded(shadow_rays, expected, actual), "");
