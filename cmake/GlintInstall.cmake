@@ -2,7 +2,8 @@
 # structures and CPU tracing: no GL, no window system, no Embree) and, in a build with CUDA,
 # glint::accel_cuda (the device BVHs and tracing); headers under include/glint/ in src/'s layout, so
 # a consumer writes #include "accel/builder.h" as glint does. Components: `development` (libraries,
-# headers, the package files) and `runtime` (the glint command). The example project
+# headers, the package files), `runtime` (the glint command) and `python` (the module,
+# cmake/GlintPython.cmake). The example project
 # examples/accel_trace builds against an install in the test suite (LibraryExampleBuilds).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)

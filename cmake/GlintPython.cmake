@@ -38,9 +38,15 @@ function(glint_add_python_module)
   # NO_EXTRAS: no link-time optimisation of the module (glint's static libraries are not LTO objects,
   # and an LTO link would cost minutes for nothing).
   pybind11_add_module(glint_python MODULE NO_EXTRAS ${_sources})
-  set_target_properties(glint_python PROPERTIES OUTPUT_NAME glint LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python)
+  set_target_properties(glint_python PROPERTIES OUTPUT_NAME glint LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/python
+                                                INSTALL_RPATH_USE_LINK_PATH ON)  # the CUDA runtime, installed
   target_include_directories(glint_python PRIVATE ${CMAKE_SOURCE_DIR})  # "python/..." includes
   target_link_libraries(glint_python PRIVATE glint glint_warnings)
+  # `cmake --install build --component python`: the module under the prefix where Debian's python3
+  # looks for it with prefix /usr/local (lib/python3.X/dist-packages); GLINT_PYTHON_INSTALL_DIR changes it.
+  set(GLINT_PYTHON_INSTALL_DIR "lib/python${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}/dist-packages"
+      CACHE STRING "Where `cmake --install` puts the Python module, under the prefix")
+  install(TARGETS glint_python LIBRARY DESTINATION ${GLINT_PYTHON_INSTALL_DIR} COMPONENT python)
 
   if(GLINT_BUILD_TESTS)
     # tests/python/ with pytest; one CTest test per file keeps failures readable and runs them in parallel.
