@@ -12,6 +12,7 @@ namespace glint::rt {
 
 RayTracer::~RayTracer() = default;
 DeviceTracing::~DeviceTracing() = default;
+GlTracing::~GlTracing() = default;
 
 HitAndShadowTickets DeviceTracing::trace_closest_and_hit_shadows_device(const accel::Ray*, accel::Hit*,
                                                                         const uint32_t*, uint32_t,

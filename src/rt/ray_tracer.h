@@ -72,6 +72,7 @@ struct RayTracerStats {
 };
 
 class DeviceTracing;
+class GlTracing;
 
 class RayTracer {
 public:
@@ -103,6 +104,26 @@ public:
 
   // GPU backends (cuda) also trace rays that already live in GPU memory; CPU backends return null.
   virtual DeviceTracing* device_tracing() { return nullptr; }
+  // The gl backend traces rays in GL buffers with OpenGL compute shaders; the others return null.
+  virtual GlTracing* gl_tracing() { return nullptr; }
+};
+
+// The GL-resident side of the gl backend, which traverses its structures in OpenGL compute shaders
+// on the current GL context: the renderer hands it the names of its GL buffers, and the traces are
+// GL dispatches ordered with the renderer's other passes by GL itself, so a frame makes no GL-CUDA
+// hand-over and the host never waits. Buffers are std430 arrays in accel's layouts (accel::Ray 32
+// bytes, accel::Hit 20 bytes); `ray_count` is a GL buffer whose first uint is the number of rays,
+// read on the GPU, of which at most `capacity` are traced; slots at or past it are not written.
+// Each call ends with the shader-storage and buffer-update barriers its readers need.
+class GlTracing {
+public:
+  virtual ~GlTracing();
+  // hits[i] = closest hit of rays[i] (RayTracer::trace_closest's convention).
+  virtual void trace_closest_gl(std::uint32_t rays, std::uint32_t hits, std::uint32_t ray_count,
+                                std::uint32_t capacity) = 0;
+  // occluded[i] = 1 when rays[i] hits anything within [t_min, t_max], else 0: one uint per ray.
+  virtual void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
+                            std::uint32_t capacity) = 0;
 };
 
 // A timed piece of GPU work a DeviceTracing call enqueued (a trace, an update): its GPU time is read

@@ -184,7 +184,7 @@ TEST(CudaRayTracerOcclusion, HitShadowRaysAreTracedWithTheHits) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   Scene scene = testing::make_instanced_scene();
   SceneDeformers(scene).apply(scene, 23);  // bent meshes: hits on every side of the light
-  const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 3000, 11);
+  const std::vector<accel::Ray> rays = testing::reflection_like_rays(scene, 3000, 11);
   const auto capacity = static_cast<uint32_t>(rays.size());
   const uint32_t traced = capacity - 101;
   const vec3 light = scene.world_bounds().center() + vec3(0.0f, 0.3f, 0.1f) * length(scene.world_bounds().extent());
