@@ -27,7 +27,7 @@ namespace {
 
 constexpr const char* kBackends[] = {"cpu", "embree", "cuda", "optix"};
 
-std::unique_ptr<MeshStructure> make_structure(const py::array& vertices, const py::array& indices,
+std::unique_ptr<MeshStructure> make_structure(const py::object& vertices, const py::object& indices,
                                               const std::string& builder, const std::string& backend) {
   std::vector<vec3> positions = points_from_array(vertices, "glint.Structure: vertices");
   std::vector<uint32_t> triangles = indices_from_array(indices, positions.size(), "glint.Structure: indices");
@@ -36,7 +36,7 @@ std::unique_ptr<MeshStructure> make_structure(const py::array& vertices, const p
 }
 
 // {"t", "prim", "u", "v"}: float32, int64 (-1 for a miss; t is then inf), float32, float32.
-py::dict trace_closest(const MeshStructure& structure, const py::array& origins, const py::array& directions,
+py::dict trace_closest(const MeshStructure& structure, const py::object& origins, const py::object& directions,
                        const py::object& t_min, const py::object& t_max) {
   const std::vector<accel::Ray> rays =
       rays_from_arrays(origins, directions, t_min, t_max, "glint.Structure.trace_closest");
@@ -66,7 +66,7 @@ py::dict trace_closest(const MeshStructure& structure, const py::array& origins,
   return result;
 }
 
-py::array_t<bool> trace_any(const MeshStructure& structure, const py::array& origins, const py::array& directions,
+py::array_t<bool> trace_any(const MeshStructure& structure, const py::object& origins, const py::object& directions,
                             const py::object& t_min, const py::object& t_max) {
   const std::vector<accel::Ray> rays = rays_from_arrays(origins, directions, t_min, t_max, "glint.Structure.trace_any");
   std::vector<uint8_t> occluded(rays.size());
@@ -80,7 +80,7 @@ py::array_t<bool> trace_any(const MeshStructure& structure, const py::array& ori
   return result;
 }
 
-void refit(MeshStructure& structure, const py::array& vertices, const std::string& policy) {
+void refit(MeshStructure& structure, const py::object& vertices, const std::string& policy) {
   std::vector<vec3> positions = points_from_array(vertices, "glint.Structure.refit: vertices");
   const rt::UpdatePolicy update = rt::parse_update_policy(policy);
   py::gil_scoped_release unlocked;
@@ -155,7 +155,7 @@ PYBIND11_MODULE(glint, m) {
                             "An acceleration structure over one triangle mesh, built by a ray tracing backend.")
       .def(py::init(&make_structure), py::arg("vertices"), py::arg("indices"), py::arg("builder") = defaults.accel,
            py::arg("backend") = "cpu",
-           "vertices: float32/float64 (N, 3); indices: integer (M, 3) vertex numbers; builder: one of BUILDERS "
+           "vertices: float32/float64 (N, 3) array-like; indices: integer (M, 3) vertex numbers; builder: one of BUILDERS "
            "(cpu and cuda backends); backend: one of BACKENDS (cuda and optix need a CUDA GPU).")
       .def("trace_closest", &trace_closest, py::arg("origins"), py::arg("directions"), py::arg("t_min") = 0.0,
            py::arg("t_max") = std::numeric_limits<double>::infinity(),

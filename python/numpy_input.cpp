@@ -21,6 +21,16 @@ std::string describe(const py::array& array) {
 
 bool has_shape_n3(const py::array& array) { return array.ndim() == 2 && array.shape(1) == 3; }
 
+// numpy.asarray(value); glint::Error when numpy cannot make an array of it.
+py::array as_array(const py::object& value, std::string_view what) {
+  py::array array = py::array::ensure(value);
+  if (!array) {
+    PyErr_Clear();
+    fail("{}: expected an array, got {}", what, std::string(py::str(py::type::of(value).attr("__name__"))));
+  }
+  return array;
+}
+
 // Per-ray parameter: a number for every ray, or one number per ray.
 std::vector<float> per_ray_values(const py::object& value, std::size_t count, std::string_view what,
                                   std::string_view name) {
@@ -38,7 +48,8 @@ std::vector<float> per_ray_values(const py::object& value, std::size_t count, st
 
 }  // namespace
 
-std::vector<vec3> points_from_array(const py::array& array, std::string_view what) {
+std::vector<vec3> points_from_array(const py::object& value, std::string_view what) {
+  const py::array array = as_array(value, what);
   const char kind = array.dtype().kind();
   if (kind != 'f' || (array.itemsize() != 4 && array.itemsize() != 8) || !has_shape_n3(array))
     fail("{}: expected a float32 or float64 array of shape (N, 3), got a {}", what, describe(array));
@@ -54,7 +65,8 @@ std::vector<vec3> points_from_array(const py::array& array, std::string_view wha
   return points;
 }
 
-std::vector<uint32_t> indices_from_array(const py::array& array, std::size_t vertex_count, std::string_view what) {
+std::vector<uint32_t> indices_from_array(const py::object& value, std::size_t vertex_count, std::string_view what) {
+  const py::array array = as_array(value, what);
   const char kind = array.dtype().kind();
   if ((kind != 'i' && kind != 'u') || !has_shape_n3(array))
     fail("{}: expected an integer array of shape (M, 3), got a {}", what, describe(array));
@@ -71,7 +83,7 @@ std::vector<uint32_t> indices_from_array(const py::array& array, std::size_t ver
   return indices;
 }
 
-std::vector<accel::Ray> rays_from_arrays(const py::array& origins, const py::array& directions,
+std::vector<accel::Ray> rays_from_arrays(const py::object& origins, const py::object& directions,
                                          const py::object& t_min, const py::object& t_max, std::string_view what) {
   const std::vector<vec3> from = points_from_array(origins, fmt::format("{}: origins", what));
   const std::vector<vec3> along = points_from_array(directions, fmt::format("{}: directions", what));

@@ -32,6 +32,14 @@ def test_bad_vertices(mesh, bad, match):
         glint.Structure(bad(vertices), indices)
 
 
+def test_not_an_array(mesh):
+    _, indices = mesh
+    with raises(r"^glint.Structure: vertices: expected an array, got list$"):
+        glint.Structure([[0.0, 1.0, 2.0], [1.0]], indices)
+    with raises(r"vertices: expected a float32 or float64 array of shape \(N, 3\), got a <U3 array of shape \(\)"):
+        glint.Structure("abc", indices)
+
+
 def test_nan_vertex(mesh):
     vertices, indices = mesh
     vertices[7, 1] = np.nan

@@ -130,6 +130,13 @@ def test_shared_vertices_and_index_dtypes(rng):
     assert hits["t"][2] == np.inf
 
 
+def test_nested_lists_are_arrays():
+    structure = glint.Structure([[0, 0, 1], [1, 0, 1], [0, 1, 1.0]], [[0, 1, 2]])
+    hits = structure.trace_closest([[0.25, 0.25, 0.0]], [[0.0, 0.0, 2.0]])
+    assert hits["prim"].tolist() == [0] and hits["t"].tolist() == [0.5]
+    assert structure.trace_any([[0.25, 0.25, 0.0]], [[0.0, 0.0, 2.0]], t_max=[0.4]).tolist() == [False]
+
+
 def test_no_rays(rng):
     vertices, indices = random_triangles(rng, count=10)
     structure = glint.Structure(vertices, indices)
