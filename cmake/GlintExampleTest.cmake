@@ -38,3 +38,17 @@ message(STATUS "example output:\n${step_output}")
 if(NOT step_output MATCHES "closest hit: triangle 1 at t = 2")
   message(FATAL_ERROR "example test: unexpected output:\n${step_output}")
 endif()
+
+# With CUDA the example also built accel_trace_cuda (glint::accel_cuda): it must trace on a GPU, or
+# say in one line that there is none.
+if(EXISTS ${GLINT_WORK_DIR}/build/accel_trace_cuda)
+  execute_process(COMMAND ${GLINT_WORK_DIR}/build/accel_trace_cuda RESULT_VARIABLE result OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(result EQUAL 0 AND out MATCHES "cuda lbvh: closest hit: triangle 1 at t = 2")
+    message(STATUS "example output (GPU):\n${out}")
+  elseif(NOT result EQUAL 0 AND err MATCHES "needs a CUDA GPU")
+    message(STATUS "accel_trace_cuda built; not run here: ${err}")
+  else()
+    message(FATAL_ERROR "example test: accel_trace_cuda failed (${result}):\n${out}\n${err}")
+  endif()
+endif()
