@@ -40,3 +40,18 @@ def test_cuda_refit(rng, builder):
     structure.refit(new_vertices)
     assert_hits_match(structure.trace_closest(origins, directions),
                       brute_force_closest(new_vertices, indices, origins, directions))
+
+
+@needs_gpu
+def test_optix_hits_equal_brute_force(rng):
+    vertices, indices = random_triangles(rng)
+    origins, directions = random_rays(rng)
+    try:
+        structure = glint.Structure(vertices, indices, backend="optix")
+    except glint.Error as error:
+        if "not in this build" in str(error):
+            pytest.skip(str(error))
+        raise
+    hits = structure.trace_closest(origins, directions)
+    assert_hits_match(hits, brute_force_closest(vertices, indices, origins, directions))
+    np.testing.assert_array_equal(structure.trace_any(origins, directions), hits["prim"] >= 0)
