@@ -103,9 +103,10 @@ py::dict stats(const MeshStructure& structure) {
   return result;
 }
 
-py::array_t<uint8_t> render_scene_frame(const std::string& scene, int frame, int width, int height, const std::string& reflections,
-                            const std::string& backend, const std::string& accel, const std::string& update,
-                            const std::string& shadows, const std::string& gbuffer, bool deform) {
+py::array_t<uint8_t> render_scene_frame(const std::string& scene, int frame, int width, int height,
+                                        const std::string& reflections, const std::string& backend,
+                                        const std::string& accel, const std::string& update,
+                                        const std::string& shadows, const std::string& gbuffer, bool deform) {
   RenderOptions options;
   options.scene = scene;
   options.width = width;
@@ -142,7 +143,8 @@ PYBIND11_MODULE(glint, m) {
       "A failure glint reports: its one-line message says what and where (the argument or file).";
 
   py::list builders;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) builders.append(std::string(accel::builder_name(builder)));
+  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
+    builders.append(std::string(accel::builder_name(builder)));
   m.attr("BUILDERS") = py::tuple(builders);
   py::list backends;
   for (const char* backend : kBackends) backends.append(backend);
@@ -155,8 +157,8 @@ PYBIND11_MODULE(glint, m) {
                             "An acceleration structure over one triangle mesh, built by a ray tracing backend.")
       .def(py::init(&make_structure), py::arg("vertices"), py::arg("indices"), py::arg("builder") = defaults.accel,
            py::arg("backend") = "cpu",
-           "vertices: float32/float64 (N, 3) array-like; indices: integer (M, 3) vertex numbers; builder: one of BUILDERS "
-           "(cpu and cuda backends); backend: one of BACKENDS (cuda and optix need a CUDA GPU).")
+           "vertices: float32/float64 (N, 3) array-like; indices: integer (M, 3) vertex numbers; builder: one of "
+           "BUILDERS (cpu and cuda backends); backend: one of BACKENDS (cuda and optix need a CUDA GPU).")
       .def("trace_closest", &trace_closest, py::arg("origins"), py::arg("directions"), py::arg("t_min") = 0.0,
            py::arg("t_max") = std::numeric_limits<double>::infinity(),
            "Closest hit of each ray origin + t * direction with t in [t_min, t_max]: a dict of arrays t (float32, "
@@ -175,8 +177,8 @@ PYBIND11_MODULE(glint, m) {
       .def_property_readonly("vertex_count", &MeshStructure::vertex_count)
       .def_property_readonly("triangle_count", &MeshStructure::triangle_count);
 
-  m.def("render", &render_scene_frame, py::arg("scene") = defaults.scene, py::arg("frame") = 0, py::arg("width") = defaults.width,
-        py::arg("height") = defaults.height, py::arg("reflections") = defaults.reflections,
+  m.def("render", &render_scene_frame, py::arg("scene") = defaults.scene, py::arg("frame") = 0,
+        py::arg("width") = defaults.width, py::arg("height") = defaults.height, py::arg("reflections") = defaults.reflections,
         py::arg("backend") = defaults.backend, py::arg("accel") = defaults.accel, py::arg("update") = defaults.update,
         py::arg("shadows") = defaults.shadows, py::arg("gbuffer") = defaults.gbuffer, py::arg("deform") = true,
         "One frame of the scene's walkthrough as `glint render --frames FRAME` renders it (same options, same "
