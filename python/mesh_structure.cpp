@@ -3,6 +3,10 @@
 #include "core/error.h"
 #include "cuda/device_query.h"
 
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <iterator>
 #include <utility>
 
 namespace glint::python {
@@ -37,6 +41,8 @@ Scene one_mesh_scene(std::vector<vec3> positions, std::vector<uint32_t> indices)
 MeshStructure::MeshStructure(std::vector<vec3> positions, std::vector<uint32_t> indices, const std::string& builder,
                              const std::string& backend)
     : builder_(builder), backend_(backend), scene_(one_mesh_scene(std::move(positions), std::move(indices))) {
+  if (std::find(std::begin(kStructureBackends), std::end(kStructureBackends), backend) == std::end(kStructureBackends))
+    fail("{}: unknown backend \"{}\" (known: {})", kSource, backend, fmt::join(kStructureBackends, ", "));
   rt::AccelOptions options;
   options.builder = accel::parse_bvh_builder(builder);
   if ((backend == "embree" || backend == "optix") && options.builder != accel::BvhBuilder::sah)

@@ -17,11 +17,15 @@
 
 namespace glint::python {
 
+// The backends a Structure can use: those that trace host rays without the renderer's GL context
+// (rt::make_ray_tracer knows more, e.g. GL compute tracing, which needs the frame pipeline's context).
+inline constexpr const char* kStructureBackends[] = {"cpu", "embree", "cuda", "optix"};
+
 class MeshStructure {
 public:
   // `builder`: accel::builder_name of the cpu and cuda backends' BVH (embree and optix build their
   // own: any other name than the default "sah" is a glint::Error there). glint::Error for an unknown
-  // builder or backend, a backend this build lacks, a GPU backend without a CUDA GPU, an index out of
+  // builder or a backend not in kStructureBackends, a backend this build lacks, a GPU backend without a CUDA GPU, an index out of
   // range, a non-finite vertex or no triangles.
   MeshStructure(std::vector<vec3> positions, std::vector<uint32_t> indices, const std::string& builder,
                 const std::string& backend);

@@ -25,8 +25,6 @@ namespace py = pybind11;
 namespace glint::python {
 namespace {
 
-constexpr const char* kBackends[] = {"cpu", "embree", "cuda", "optix"};
-
 std::unique_ptr<MeshStructure> make_structure(const py::object& vertices, const py::object& indices,
                                               const std::string& builder, const std::string& backend) {
   std::vector<vec3> positions = points_from_array(vertices, "glint.Structure: vertices");
@@ -147,7 +145,7 @@ PYBIND11_MODULE(glint, m) {
     builders.append(std::string(accel::builder_name(builder)));
   m.attr("BUILDERS") = py::tuple(builders);
   py::list backends;
-  for (const char* backend : kBackends) backends.append(backend);
+  for (const char* backend : kStructureBackends) backends.append(backend);
   m.attr("BACKENDS") = py::tuple(backends);
   m.def("cuda_available", &cuda_gpu_present,
         "True when glint was built with CUDA and a CUDA GPU is usable now (the cuda and optix backends need one).");

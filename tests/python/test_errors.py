@@ -69,7 +69,7 @@ def test_unknown_builder_and_backend(mesh):
     vertices, indices = mesh
     with raises(r"unknown BVH builder 'bvh9' \(known: none, median, sah"):
         glint.Structure(vertices, indices, builder="bvh9")
-    with raises(r"unknown ray tracing backend \"gpu\" \(known: cpu, embree, cuda, optix\)"):
+    with raises(r"^glint.Structure: unknown backend \"gpu\" \(known: cpu, embree, cuda, optix\)$"):
         glint.Structure(vertices, indices, backend="gpu")
     with raises(r"builder=\"lbvh\" applies to the cpu and cuda backends"):
         glint.Structure(vertices, indices, builder="lbvh", backend="embree")
