@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "cuda/cuda_ray_tracer.h"
+#include "gl_rt/make_gl_ray_tracer.h"
 #include "rt/cpu_ray_tracer.h"
 #include "rt/embree_ray_tracer.h"
 #if GLINT_HAVE_OPTIX
@@ -52,10 +53,11 @@ std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend) {
   if (backend == "cpu") return std::make_unique<CpuRayTracer>();
   if (backend == "embree") return std::make_unique<EmbreeRayTracer>();
   if (backend == "cuda") return cuda::make_cuda_ray_tracer();
+  if (backend == "gl") return gl_rt::make_gl_ray_tracer();
 #if GLINT_HAVE_OPTIX
   if (backend == "optix") return std::make_unique<optix::OptixRayTracer>();
 #endif
-  fail("unknown ray tracing backend \"{}\" (known: cpu, embree, cuda, optix)", backend);
+  fail("unknown ray tracing backend \"{}\" (known: cpu, embree, cuda, optix, gl)", backend);
 }
 
 }  // namespace glint::rt

@@ -1,0 +1,18 @@
+#version 450 core
+// The gl backend's occlusion query (src/gl_rt/gl_ray_tracer.h, docs/ray-tracer.md "gl"): one
+// invocation per ray, occluded[i] = 1 when rays[i] hits anything within [t_min, t_max], else 0;
+// the walk returns at the first hit.
+layout(local_size_x = 64) in;
+
+const bool kAnyHit = true;
+#include "include/gl_rt_kernel.glsl"
+
+layout(std430, binding = 26) writeonly buffer TracerOccluded { uint tracer_occluded[]; };
+
+void main() {
+  const uint i = ray_index();
+  if (i == kInvalidIndex) return;
+  const Ray ray = tracer_rays[i];
+  Hit unused;
+  tracer_occluded[i] = trace_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, unused) ? 1u : 0u;
+}

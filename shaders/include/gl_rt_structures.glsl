@@ -1,0 +1,39 @@
+// The gl backend's structures (src/gl_rt/gl_structure_buffers.h, docs/ray-tracer.md "gl"): every
+// BLAS and the TLAS in accel::BvhNode's layout in one node array and one primitive-index array, each
+// BLAS in its own region; the meshes' object-space vertices and triangles; one record per instance.
+// Bindings 20..24 and 28 (25..27 in gl_rt_kernel.glsl) are above every binding the renderer's passes
+// use, so a trace leaves their bindings alone. Keep in step with src/gl_rt/gl_rt_bindings.h.
+
+// accel::BvhNode (32 bytes): interior (prim_count == 0): `first` is the left child, the right one
+// follows it; leaf: prim_count entries of the primitive indices from `first`. Indices are local to
+// the node's own BVH: the walk adds its region's offsets.
+struct BvhNode {
+  vec3 bounds_min;
+  uint first;
+  vec3 bounds_max;
+  uint prim_count;
+};
+
+// gl_rt::GlInstanceRecord (80 bytes): the instance's world-to-object transform and where its BLAS
+// and its mesh's triangles live.
+struct TracerInstance {
+  mat4 world_to_object;
+  uint node_offset;      // the BLAS's root in bvh_nodes
+  uint prim_offset;      // its first entry of bvh_prims
+  uint triangle_offset;  // the mesh's first triangle in mesh_triangles
+  uint node_count;       // 0: an empty BLAS, never hit
+};
+
+layout(std430, binding = 20) readonly buffer TracerNodes { BvhNode bvh_nodes[]; };
+layout(std430, binding = 21) readonly buffer TracerPrims { uint bvh_prims[]; };
+// Object-space positions (w unused) of every mesh, one after the other.
+layout(std430, binding = 22) readonly buffer TracerVertices { vec4 mesh_vertices[]; };
+// Per triangle the indices of its corners in mesh_vertices (the mesh's vertex offset added; w unused).
+layout(std430, binding = 23) readonly buffer TracerTriangles { uvec4 mesh_triangles[]; };
+layout(std430, binding = 24) readonly buffer TracerInstances { TracerInstance tracer_instances[]; };
+
+// Set to 1 by a walk whose stack would overflow (gl_rt_traverse.glsl); the host reads and clears it.
+layout(std430, binding = 28) buffer TracerFlags { uint tracer_stack_overflow; };
+
+// The TLAS is the region at the start of bvh_nodes and bvh_prims; 0 nodes: every ray misses.
+uniform uint tlas_node_count;

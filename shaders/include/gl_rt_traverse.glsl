@@ -1,0 +1,203 @@
+// The gl backend's two-level walk, one invocation per ray: src/accel/tlas_traverse.h over the TLAS
+// and src/accel/traverse.h in each BLAS entered (depth first, the nearer child first, the farther one
+// pushed with its entry distance and skipped on pop once a closer hit is known; the conservative slab
+// test; the watertight triangle test; accel::record_closer_hit's tie rule), so hits equal the cpu
+// backend's up to rounding. The includer declares `const bool kAnyHit` first: false for the closest
+// hit, true for the occlusion query, which returns at the first hit (a compile-time constant, so each
+// kernel compiles only its own walk).
+#include "include/gl_rt_structures.glsl"
+#include "include/gl_rt_triangle.glsl"
+
+const uint kInvalidIndex = 0xFFFFFFFFu;
+// accel::kMaxBvhDepth: a push past it sets tracer_stack_overflow (gl_rt_structures.glsl) and ends that
+// level's walk instead of writing past the stack. glint's builders never get there.
+const uint kStackSize = 64u;
+// The slab test's slack on its far distance. accel::kSlabFarScale is 1 + 3 ulp (2 gamma(3)) for
+// IEEE division; GLSL's division may be off by 2.5 ulp (GLSL 4.50, 4.7.1), so 1 + 6 ulp here: more
+// slack only visits a few more boxes, never changes a hit.
+const float kSlabFarScale = uintBitsToFloat(0x3F800006u);
+
+// accel::Hit, also the record the closest-hit kernel writes.
+struct Hit {
+  float t;
+  uint instance;
+  uint prim;
+  float u;
+  float v;
+};
+
+struct BoxRay {
+  vec3 origin;
+  vec3 inv_direction;  // +-infinity for a zero component; its sign picks the near plane
+};
+
+BoxRay make_box_ray(vec3 origin, vec3 direction) {
+  precise vec3 inv_direction = vec3(1.0) / direction;
+  return BoxRay(origin, inv_direction);
+}
+
+// accel::intersect_box: the segment [t_min, t_max] enters the node's box; t_entry is where (clamped
+// to t_min). The comparisons are written so that a NaN (0 x infinity) never wins, as on the CPU.
+bool intersect_box(BoxRay ray, BvhNode node, float t_min, float t_max, out float t_entry) {
+  const bvec3 negative = lessThan(ray.inv_direction, vec3(0.0));
+  const vec3 near_plane = mix(node.bounds_min, node.bounds_max, negative);
+  const vec3 far_plane = mix(node.bounds_max, node.bounds_min, negative);
+  precise vec3 t0 = (near_plane - ray.origin) * ray.inv_direction;
+  precise vec3 t1 = (far_plane - ray.origin) * ray.inv_direction;
+  float t_near = t_min;
+  t_near = t0.x > t_near ? t0.x : t_near;
+  t_near = t0.y > t_near ? t0.y : t_near;
+  t_near = t0.z > t_near ? t0.z : t_near;
+  float t_far = kInfinity;
+  t_far = t1.x < t_far ? t1.x : t_far;
+  t_far = t1.y < t_far ? t1.y : t_far;
+  t_far = t1.z < t_far ? t1.z : t_far;
+  precise float t_exit = (t_far < t_max ? t_far : t_max) * kSlabFarScale;
+  t_entry = t_near;
+  return t_near <= t_exit;
+}
+
+// The step at an interior node (its children at node_offset + first and the one after), shared by
+// both levels: returns how many children the segment enters. 1: `next` is that child; 2: `next` is
+// the nearer one and far_index / far_entry the other one's node and entry distance, to be pushed.
+uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, float t_max, out BvhNode next,
+                    out uint far_index, out float far_entry) {
+  const uint left_index = node_offset + node.first;
+  const BvhNode left = bvh_nodes[left_index];
+  const BvhNode right = bvh_nodes[left_index + 1u];
+  float t_left, t_right;
+  const bool hit_left = intersect_box(ray, left, t_min, t_max, t_left);
+  const bool hit_right = intersect_box(ray, right, t_min, t_max, t_right);
+  const bool right_first = hit_right && (!hit_left || t_right < t_left);
+  next = right_first ? right : left;
+  far_index = right_first ? left_index : left_index + 1u;
+  far_entry = right_first ? t_left : t_right;
+  return uint(hit_left) + uint(hit_right);
+}
+
+// Per-invocation stacks (globals are private to each invocation), one per level.
+uint tlas_stack_node[kStackSize];
+float tlas_stack_entry[kStackSize];
+uint blas_stack_node[kStackSize];
+float blas_stack_entry[kStackSize];
+
+// One BLAS in the instance's object space. Closest hit: records a closer hit in `hit` (t, prim, u, v),
+// lowering t_max; returns whether it did. Any hit: returns true at the first triangle in range.
+bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min, inout float t_max,
+               inout Hit hit) {
+  if (instance.node_count == 0u) return false;
+  const BoxRay box_ray = make_box_ray(origin, direction);
+  BvhNode node = bvh_nodes[instance.node_offset];
+  float t_entry;
+  if (!intersect_box(box_ray, node, t_min, t_max, t_entry)) return false;
+  const WatertightRay ray = make_watertight_ray(origin, direction);
+  uint stack_size = 0u;
+  bool found = false;
+  for (;;) {
+    if (node.prim_count != 0u) {
+      const uint end = node.first + node.prim_count;
+      for (uint slot = node.first; slot != end; ++slot) {
+        const uint prim = bvh_prims[instance.prim_offset + slot];
+        const uvec4 corners = mesh_triangles[instance.triangle_offset + prim];
+        float t, u, v;
+        if (!intersect_triangle(ray, mesh_vertices[corners.x].xyz, mesh_vertices[corners.y].xyz,
+                                mesh_vertices[corners.z].xyz, t_min, t_max, t, u, v))
+          continue;
+        if (kAnyHit) return true;
+        // accel::record_closer_hit: equal t keeps the hit found first (in this or an earlier instance).
+        if (t == t_max && hit.prim != kInvalidIndex) continue;
+        t_max = t;
+        hit.t = t;
+        hit.prim = prim;
+        hit.u = u;
+        hit.v = v;
+        found = true;
+      }
+    } else {
+      BvhNode next;
+      uint far_index;
+      float far_entry;
+      const uint entered = enter_children(node, instance.node_offset, box_ray, t_min, t_max, next, far_index, far_entry);
+      if (entered == 2u) {
+        if (stack_size == kStackSize) {
+          tracer_stack_overflow = 1u;
+          return found;
+        }
+        blas_stack_node[stack_size] = far_index;
+        blas_stack_entry[stack_size] = far_entry;
+        ++stack_size;
+      }
+      if (entered != 0u) {
+        node = next;
+        continue;
+      }
+    }
+    // The next subtree that may still hold something closer than t_max (with the box test's slack).
+    for (;;) {
+      if (stack_size == 0u) return found;
+      --stack_size;
+      if (blas_stack_entry[stack_size] <= t_max * kSlabFarScale) break;
+    }
+    node = bvh_nodes[blas_stack_node[stack_size]];
+  }
+  return found;
+}
+
+// Both levels for one world ray: the TLAS over instances (the region at the start of bvh_nodes and
+// bvh_prims), each instance entered with the ray in its object space (accel::to_object_space: glm's
+// mat4 x vec4 as (c0 x + c1 y) + (c2 z + c3 w), so t is the same in both spaces). Closest hit: `hit`
+// in RayTracer's convention (Hit{t = inf, instance = prim = kInvalidIndex} for a miss). Any hit:
+// returns whether anything lies within [t_min, t_max].
+bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hit hit) {
+  hit = Hit(kInfinity, kInvalidIndex, kInvalidIndex, 0.0, 0.0);
+  if (tlas_node_count == 0u) return false;
+  float t_max = ray_t_max;
+  const BoxRay box_ray = make_box_ray(origin, direction);
+  BvhNode node = bvh_nodes[0];
+  float t_entry;
+  if (!intersect_box(box_ray, node, t_min, t_max, t_entry)) return false;
+  uint stack_size = 0u;
+  bool found = false;
+  for (;;) {
+    if (node.prim_count != 0u) {
+      const uint end = node.first + node.prim_count;
+      for (uint slot = node.first; slot != end; ++slot) {
+        const uint index = bvh_prims[slot];
+        const TracerInstance instance = tracer_instances[index];
+        const mat4 m = instance.world_to_object;
+        precise vec3 local_origin = (m[0].xyz * origin.x + m[1].xyz * origin.y) + (m[2].xyz * origin.z + m[3].xyz);
+        // w = 0: c3 w is a zero added to c2 z, which leaves it unchanged.
+        precise vec3 local_direction = (m[0].xyz * direction.x + m[1].xyz * direction.y) + m[2].xyz * direction.z;
+        if (!walk_blas(instance, local_origin, local_direction, t_min, t_max, hit)) continue;
+        if (kAnyHit) return true;
+        hit.instance = index;
+        found = true;
+      }
+    } else {
+      BvhNode next;
+      uint far_index;
+      float far_entry;
+      const uint entered = enter_children(node, 0u, box_ray, t_min, t_max, next, far_index, far_entry);
+      if (entered == 2u) {
+        if (stack_size == kStackSize) {
+          tracer_stack_overflow = 1u;
+          return found;
+        }
+        tlas_stack_node[stack_size] = far_index;
+        tlas_stack_entry[stack_size] = far_entry;
+        ++stack_size;
+      }
+      if (entered != 0u) {
+        node = next;
+        continue;
+      }
+    }
+    for (;;) {
+      if (stack_size == 0u) return found;
+      --stack_size;
+      if (tlas_stack_entry[stack_size] <= t_max * kSlabFarScale) break;
+    }
+    node = bvh_nodes[tlas_stack_node[stack_size]];
+  }
+  return found;
+}

@@ -1,0 +1,221 @@
+#include "gl_rt/gl_ray_tracer.h"
+
+#include "accel/builder.h"
+#include "core/error.h"
+#include "gl/gl_check.h"
+#include "gl_rt/gl_rt_bindings.h"
+#include "gl_rt/make_gl_ray_tracer.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace glint::gl_rt {
+namespace {
+
+constexpr GLuint kWorkGroupSize = 64;          // local_size_x of both kernels
+constexpr std::uint64_t kMaxGroupsPerDispatch = 65535;  // GL's guaranteed minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
+
+double ms_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The tracer compiles shaders and makes buffers on the current context, so it needs one: checked
+// before the first GL call, which without a context would crash rather than fail.
+void require_gl45_context() {
+  // No libEGL in the process: no context was ever made (and epoxy would abort loading it).
+  void* egl = dlopen("libEGL.so.1", RTLD_LAZY | RTLD_NOLOAD);
+  if (egl == nullptr) fail("--backend gl needs an OpenGL 4.5 context: none was created in this process");
+  dlclose(egl);
+  if (eglGetCurrentContext() == EGL_NO_CONTEXT)
+    fail("--backend gl needs an OpenGL 4.5 context: none is current on this thread");
+  if (epoxy_gl_version() < 45) {
+    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    fail("--backend gl needs an OpenGL 4.5 context: the current one is OpenGL {}", version ? version : "?");
+  }
+  GLint bindings = 0;
+  glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+  if (bindings <= static_cast<GLint>(kHighestBinding))
+    fail("--backend gl needs {} shader-storage buffer bindings; this OpenGL has {}", kHighestBinding + 1, bindings);
+}
+
+std::vector<accel::Instance> make_instances(const Scene& scene) {
+  std::vector<accel::Instance> instances;
+  instances.reserve(scene.instances.size());
+  for (const Instance& instance : scene.instances) instances.push_back(accel::make_instance(instance.mesh, instance.transform));
+  return instances;
+}
+
+uint32_t checked_ray_count(std::size_t count) {
+  if (count > std::numeric_limits<std::uint32_t>::max()) fail("rt gl: {} rays in one trace, more than 2^32 - 1", count);
+  return static_cast<uint32_t>(count);
+}
+
+GlBuffer make_flag_buffer() {
+  const std::uint32_t zero = 0;
+  return create_buffer(sizeof(zero), &zero, GL_DYNAMIC_STORAGE_BIT);
+}
+
+}  // namespace
+
+std::unique_ptr<rt::RayTracer> make_gl_ray_tracer() { return std::make_unique<GlRayTracer>(); }
+
+GlRayTracer::Kernel GlRayTracer::make_kernel(const char* name) {
+  Kernel kernel{ShaderProgram::from_embedded({name})};
+  kernel.ray_base = kernel.program.uniform_location("ray_base");
+  kernel.ray_capacity = kernel.program.uniform_location("ray_capacity");
+  kernel.tlas_node_count = kernel.program.uniform_location("tlas_node_count");
+  return kernel;
+}
+
+GlRayTracer::GlRayTracer()
+    : closest_((require_gl45_context(), make_kernel("gl_rt_closest.comp.glsl"))),
+      any_(make_kernel("gl_rt_any.comp.glsl")),
+      flag_(make_flag_buffer()) {
+  check_gl("rt gl: set-up");
+}
+
+void GlRayTracer::require_built(const char* what) const {
+  if (!built_) fail("rt gl: {} before build()", what);
+}
+
+void GlRayTracer::set_tlas_node_count() {
+  for (const Kernel* kernel : {&closest_, &any_})
+    glProgramUniform1ui(kernel->program.id(), kernel->tlas_node_count, structures_.tlas_node_count());
+}
+
+void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
+  scene.validate();
+  if (!(options.auto_rebuild_sah_ratio >= 1.0f))
+    fail("rt gl: auto_rebuild_sah_ratio must be >= 1 (got {})", options.auto_rebuild_sah_ratio);
+  const auto start = std::chrono::steady_clock::now();
+  built_ = false;
+  options_ = options;
+  shape_ = rt::scene_shape(scene);
+  blases_.build(scene, options);
+  // Binned SAH like the cpu backend's TLAS, whatever the BLAS builder.
+  tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
+  structures_.upload_all(blases_, tlas_);
+  set_tlas_node_count();
+  build_ms_ = ms_since(start);
+  last_update_ms_ = 0.0;
+  built_ = true;
+}
+
+void GlRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
+  require_built("update()");
+  rt::check_update(name(), shape_, scene, dirty_meshes);
+  blases_.check_refittable(scene, dirty_meshes, policy, name());
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<bool> rebuilt = blases_.update(scene, dirty_meshes, policy);
+  // The TLAS is small: built again over the new BLAS boxes and the current transforms (the
+  // walkthrough's moving instances), rather than refitted.
+  tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
+  structures_.upload_update(blases_, dirty_meshes, rebuilt, tlas_);
+  set_tlas_node_count();
+  last_update_ms_ = ms_since(start);
+}
+
+void GlRayTracer::dispatch(const Kernel& kernel, GLuint rays, GLuint results, GLuint ray_count,
+                           std::uint32_t capacity) const {
+  structures_.bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRayBinding, rays);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kResultBinding, results);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRayCountBinding, ray_count);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlagBinding, flag_.id());
+  glProgramUniform1ui(kernel.program.id(), kernel.ray_capacity, capacity);
+  kernel.program.use();
+  // Launched for the capacity: invocations at or past the count read on the GPU return at once.
+  const std::uint64_t rays_per_dispatch = kMaxGroupsPerDispatch * kWorkGroupSize;
+  for (std::uint64_t base = 0; base < capacity; base += rays_per_dispatch) {
+    const std::uint64_t rays_here = std::min<std::uint64_t>(rays_per_dispatch, capacity - base);
+    glProgramUniform1ui(kernel.program.id(), kernel.ray_base, static_cast<GLuint>(base));
+    glDispatchCompute(static_cast<GLuint>((rays_here + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+  }
+  // Results are read by later passes' shaders, copied or read back (buffer update), or read through
+  // a persistent mapping after a fence (client mapped).
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+}
+
+void GlRayTracer::trace_closest_gl(std::uint32_t rays, std::uint32_t hits, std::uint32_t ray_count,
+                                   std::uint32_t capacity) {
+  require_built("trace_closest_gl()");
+  if (capacity == 0) return;
+  dispatch(closest_, rays, hits, ray_count, capacity);
+  check_gl("rt gl: trace_closest_gl");
+}
+
+void GlRayTracer::trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
+                               std::uint32_t capacity) {
+  require_built("trace_any_gl()");
+  if (capacity == 0) return;
+  dispatch(any_, rays, occluded, ray_count, capacity);
+  check_gl("rt gl: trace_any_gl");
+}
+
+void GlRayTracer::check_stack_overflow() const {
+  std::uint32_t flag = 0;
+  glGetNamedBufferSubData(flag_.id(), 0, sizeof(flag), &flag);
+  if (flag == 0) return;
+  const std::uint32_t zero = 0;
+  glNamedBufferSubData(flag_.id(), 0, sizeof(zero), &zero);
+  fail("rt gl: a traversal stack overflowed (a BVH deeper than {} levels, builder {}): those rays' results are "
+       "incomplete",
+       accel::kMaxBvhDepth, accel::builder_name(options_.builder));
+}
+
+void GlRayTracer::trace_host(const Kernel& kernel, std::span<const accel::Ray> rays, std::size_t result_bytes,
+                             void* results) const {
+  const std::uint32_t count = checked_ray_count(rays.size());
+  if (count == 0) return;
+  if (count > scratch_capacity_) {
+    // Grown by half again, so a series of slightly larger batches does not reallocate every time.
+    scratch_capacity_ = std::max<std::size_t>(count, scratch_capacity_ + scratch_capacity_ / 2);
+    scratch_rays_ = create_buffer(scratch_capacity_ * sizeof(accel::Ray), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    scratch_results_ = create_buffer(scratch_capacity_ * sizeof(accel::Hit), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (!scratch_count_) scratch_count_ = create_buffer(sizeof(count), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  glNamedBufferSubData(scratch_rays_.id(), 0, static_cast<GLsizeiptr>(rays.size_bytes()), rays.data());
+  glNamedBufferSubData(scratch_count_.id(), 0, sizeof(count), &count);
+  dispatch(kernel, scratch_rays_.id(), scratch_results_.id(), scratch_count_.id(), count);
+  glGetNamedBufferSubData(scratch_results_.id(), 0, static_cast<GLsizeiptr>(count * result_bytes), results);
+  check_gl("rt gl: host-side trace");
+  check_stack_overflow();
+}
+
+void GlRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
+  require_built("trace_closest()");
+  if (rays.size() != hits.size()) fail("rt gl: {} rays but room for {} results", rays.size(), hits.size());
+  // accel::Hit is the kernel's std430 Hit record (20 bytes, five 4-byte fields).
+  trace_host(closest_, rays, sizeof(accel::Hit), hits.data());
+}
+
+void GlRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  require_built("trace_any()");
+  if (rays.size() != occluded.size()) fail("rt gl: {} rays but {} occlusion results", rays.size(), occluded.size());
+  std::vector<std::uint32_t> flags(rays.size());
+  trace_host(any_, rays, sizeof(std::uint32_t), flags.data());
+  std::transform(flags.begin(), flags.end(), occluded.begin(), [](std::uint32_t flag) { return static_cast<uint8_t>(flag != 0 ? 1 : 0); });
+}
+
+rt::RayTracerStats GlRayTracer::stats() const {
+  rt::RayTracerStats stats;
+  stats.backend = std::string(name());
+  stats.build_ms = build_ms_;
+  stats.last_update_ms = last_update_ms_;
+  stats.rebuilds = blases_.rebuilds();
+  stats.refits = blases_.refits();
+  stats.blas_sah_drift = blases_.sah_drift();
+  // GPU memory: the structure buffers (the host keeps its own copy of the BVHs and meshes too).
+  stats.memory_bytes = structures_.bytes();
+  return stats;
+}
+
+}  // namespace glint::gl_rt

@@ -1,0 +1,92 @@
+#include "gl_rt/mesh_blases.h"
+
+#include "accel/builder.h"
+#include "accel/bvh_stats.h"
+#include "accel/refit.h"
+#include "core/error.h"
+
+#include <algorithm>
+
+namespace glint::gl_rt {
+namespace {
+
+double sah_cost(const accel::Bvh& bvh, const accel::BuildOptions& build) {
+  return accel::compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
+}
+
+accel::TriangleMesh mesh_view(const MeshBlases::Mesh& mesh) {
+  return accel::make_indexed_mesh(mesh.positions, mesh.indices);
+}
+
+}  // namespace
+
+void MeshBlases::rebuild(uint32_t mesh_index) {
+  Mesh& mesh = meshes_[mesh_index];
+  const accel::TriangleMesh view = mesh_view(mesh);
+  mesh.bvh = accel::build_bvh(options_.builder, view, options_.build);
+  mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
+  // The new BVH lives in new storage: the view must follow it.
+  blases_[mesh_index] = accel::make_blas(mesh.bvh, view);
+}
+
+void MeshBlases::build(const Scene& scene, const rt::AccelOptions& options) {
+  options_ = options;
+  meshes_.clear();
+  meshes_.resize(scene.meshes.size());
+  blases_.assign(scene.meshes.size(), accel::Blas{});
+  for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    meshes_[m].positions = scene.meshes[m].positions;
+    meshes_[m].indices = scene.meshes[m].indices;
+    meshes_[m].deformable = scene.meshes[m].deformable;
+    rebuild(m);
+  }
+  rebuilds_ = refits_ = 0;
+}
+
+void MeshBlases::check_refittable(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
+                                  std::string_view backend) const {
+  if (policy == rt::UpdatePolicy::rebuild) return;
+  for (uint32_t m : dirty_meshes)
+    if (!meshes_[m].bvh.refittable)
+      fail("rt {}: update policy '{}' refits, but the {} builder's BVHs cannot be refitted (mesh '{}'); use policy "
+           "rebuild or another builder",
+           backend, rt::update_policy_name(policy), accel::builder_name(options_.builder), scene.meshes[m].name);
+}
+
+std::vector<bool> MeshBlases::update(const Scene& scene, std::span<const uint32_t> dirty_meshes,
+                                     rt::UpdatePolicy policy) {
+  std::vector<bool> rebuilt;
+  rebuilt.reserve(dirty_meshes.size());
+  for (uint32_t m : dirty_meshes) {
+    Mesh& mesh = meshes_[m];
+    // Same count (checked by the caller), new positions: the views' pointers stay valid.
+    std::copy(scene.meshes[m].positions.begin(), scene.meshes[m].positions.end(), mesh.positions.begin());
+    bool rebuild_it = policy == rt::UpdatePolicy::rebuild;
+    if (!rebuild_it) {
+      accel::refit(mesh.bvh, mesh_view(mesh));
+      rebuild_it = policy == rt::UpdatePolicy::automatic &&
+                   sah_cost(mesh.bvh, options_.build) >
+                       static_cast<double>(options_.auto_rebuild_sah_ratio) * mesh.sah_at_rebuild;
+    }
+    // The counters record the final action: a refit followed by a rebuild is a rebuild.
+    if (rebuild_it) {
+      rebuild(m);
+      ++rebuilds_;
+    } else {
+      ++refits_;
+    }
+    rebuilt.push_back(rebuild_it);
+  }
+  return rebuilt;
+}
+
+std::optional<double> MeshBlases::sah_drift() const {
+  std::optional<double> drift;
+  for (const Mesh& mesh : meshes_) {
+    if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
+    drift = std::max(drift.value_or(0.0), sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild);
+  }
+  return drift;
+}
+
+}  // namespace glint::gl_rt
