@@ -148,6 +148,10 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
   if (pipeline_.ray_tracer() != nullptr) measured.accel_update_ms = oldest.deform.accel_update_ms;
   measured.ssr_counts = readback->ssr_counts;
   measured.ray_stats = readback->ray_stats;
+  // The gl backend traces in a GL pass of its own: its time is the trace's.
+  if (measured.ray_stats)
+    for (const PassTime& pass : measured.times.passes)
+      if (pass.name == "trace") measured.ray_stats->trace_ms = pass.milliseconds;
   measured.final_image = std::move(readback->final_image);
   measured.resident_bytes = resident_memory_bytes();
   measured.gpu_memory_used_bytes = gpu_memory_used_bytes();

@@ -112,6 +112,12 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
       row.emplace_back("");
     }
   }
+  // Passes without a column of their own count in the total too (the gl backend's "trace", which
+  // timings.csv gives as trace_ms).
+  for (const PassTime& time : frame.times.passes)
+    if (std::find(std::begin(render::kFramePassNames), std::end(render::kFramePassNames), time.name) ==
+        std::end(render::kFramePassNames))
+      gpu_total_ms += time.milliseconds;
   const auto& ssr = frame.ssr_counts;
   const auto& rays = frame.ray_stats;
   row.emplace_back(gpu_total_ms);

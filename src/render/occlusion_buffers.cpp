@@ -20,18 +20,25 @@ std::size_t answer_bytes(std::size_t capacity, RayQuery query, bool device) {
 }  // namespace
 
 OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query)
-    : capacity_(capacity), what_(what), query_(query), tracer_(&tracer), device_(tracer.device_tracing()) {
+    : capacity_(capacity),
+      what_(what),
+      query_(query),
+      tracer_(&tracer),
+      device_(tracer.device_tracing()),
+      gl_(tracer.gl_tracing()) {
   if (capacity == 0) fail("{}: capacity must be at least one ray", what_);
   const auto count = static_cast<std::uint32_t>(capacity);
   ray_count_ = create_buffer(sizeof(count), &count, 0);
-  if (device_) {
+  if (device_ || gl_) {
     rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
     occluded_ = create_buffer(answer_bytes(capacity, query, true), nullptr, 0);
+  }
+  if (device_) {
     const cuda::InteropBuffer shared[] = {{rays_.id(), cuda::InteropAccess::read_only},
                                           {occluded_.id(), cuda::InteropAccess::write_discard},
                                           {ray_count_.id(), cuda::InteropAccess::read_only}};
     interop_.emplace(shared);
-  } else {
+  } else if (!gl_) {
     void* mapped = nullptr;
     rays_ = create_persistently_mapped_buffer(capacity * sizeof(accel::Ray), GL_MAP_READ_BIT, &mapped,
                                               (std::string(what) + ": rays").c_str());
@@ -50,6 +57,14 @@ void OcclusionBuffers::bind() const {
 }
 
 void OcclusionBuffers::trace(std::size_t host_count) {
+  if (gl_) {  // GL dispatches, ordered after the pass that wrote the rays by GL itself
+    const auto capacity = static_cast<std::uint32_t>(capacity_);
+    if (query_ == RayQuery::closest)
+      gl_->trace_closest_gl(rays_.id(), occluded_.id(), ray_count_.id(), capacity);
+    else
+      gl_->trace_any_gl(rays_.id(), occluded_.id(), ray_count_.id(), capacity);
+    return;
+  }
   if (device_) {
     // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping orders the GL
     // passes that read the answers after the trace: the host only enqueues.

@@ -6,7 +6,9 @@
 //    pass that wrote the rays (a fence);
 //  - GPU backends (cuda, optix): both in GPU memory, shared with CUDA once (GlBufferInterop) and
 //    mapped around each trace_any_device (one uint per ray; the count, `capacity`, sits in a GL
-//    buffer too), so the host never waits.
+//    buffer too), so the host never waits;
+//  - the gl backend: both in GPU memory, traced by its compute shaders (rt::GlTracing) like any
+//    other GL pass: no mapping, no hand-over.
 //   rays     (kShadowRayBinding):       accel::Ray[capacity]; an empty ray (t_min > t_max) is never occluded
 //   answers  (kShadowOcclusionBinding): uint[], read in GLSL by occlusion_flag.glsl's
 //            `occluded(i)` with the flag_bytes() uniform (4: a uint per ray, 1: four bytes to a uint)
@@ -44,7 +46,7 @@ public:
   OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
 
   void bind() const;  // rays and answers to their storage bindings
-  int flag_bytes() const { return device_ ? 4 : 1; }
+  int flag_bytes() const { return device_ || gl_ ? 4 : 1; }
 
   // After the pass that wrote the rays was issued (and a shader-storage barrier): answers them.
   // CPU backends trace the first `host_count` rays after waiting for the GPU; GPU backends trace
@@ -68,6 +70,7 @@ private:
   RayQuery query_;
   rt::RayTracer* tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
+  rt::GlTracing* gl_;          // tracer_'s GL side (the gl backend), or null
   GlBuffer rays_, occluded_;
   GlBuffer ray_count_;  // one uint, `capacity`: what the GPU backends read on the GPU
   accel::Ray* mapped_rays_ = nullptr;        // CPU backends

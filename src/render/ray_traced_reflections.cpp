@@ -17,7 +17,7 @@ double milliseconds_since(Clock::time_point start) {
 }
 
 RayHitMemory buffer_memory(rt::RayTracer& tracer) {
-  return tracer.device_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
+  return tracer.device_tracing() || tracer.gl_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
 }
 
 std::size_t pixel_count(int width, int height) {
@@ -49,6 +49,7 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
     : settings_(settings),
       tracer_(&tracer),
       device_(tracer_->device_tracing()),
+      gl_(tracer_->gl_tracing()),
       buffers_(pixel_count(width, height), buffer_memory(*tracer_)),
       ray_list_(width, height, buffers_),
       hit_shading_(width, height, buffers_) {
@@ -77,9 +78,17 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
                    failure_mask, raster.frame_constants_buffer()});
   });
   // A CPU backend needs the list in host memory now; a GPU backend reads the count on the GPU.
-  const RayListCounts host_counts = device_ ? RayListCounts{} : buffers_.finish_ray_list(slot);
-  trace(host_counts, slot, raster.frame_constants().light_position_range);
-  const auto max_rays = static_cast<std::uint32_t>(device_ ? buffers_.capacity() : host_counts.rays);
+  const bool on_host = device_ == nullptr && gl_ == nullptr;
+  const RayListCounts host_counts = on_host ? buffers_.finish_ray_list(slot) : RayListCounts{};
+  if (gl_) {
+    run_timed_pass(timer, "trace", [&] {
+      gl_->trace_closest_gl(buffers_.ray_buffer(), buffers_.hit_buffer(), buffers_.counter_buffer(),
+                            static_cast<std::uint32_t>(buffers_.capacity()));
+    });
+  } else {
+    trace(host_counts, slot, raster.frame_constants().light_position_range);
+  }
+  const auto max_rays = static_cast<std::uint32_t>(on_host ? host_counts.rays : buffers_.capacity());
   run_timed_pass(timer, "hit_shade", [&] {
     // The hits' shadow rays are part of shading them (a CPU backend waits for their list here).
     if (hit_shadows_) hit_shadows_->run(buffers_, raster.gpu_scene(), raster.frame_constants_buffer(), max_rays);
@@ -87,7 +96,7 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
                       reflection, hit_shadows_ ? &hit_shadows_->answers() : nullptr},
                      max_rays);
   });
-  if (device_) buffers_.request_counts(slot);  // read frames later, when the GPU is past them
+  if (!on_host) buffers_.request_counts(slot);  // read frames later, when the GPU is past them
   ++runs_;
 }
 
@@ -119,9 +128,11 @@ void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot, ve
 
 std::optional<RayTraceFrameStats> RayTracedReflections::take_stats(std::uint64_t run, bool wait) {
   const std::size_t slot = slot_of(run);
-  if (!device_) return slot_stats_[slot];
+  if (device_ == nullptr && gl_ == nullptr) return slot_stats_[slot];
   const std::optional<RayListCounts> counts = buffers_.requested_counts(slot, wait);
   if (!counts) return std::nullopt;
+  // The gl backend's trace is a GL pass, timed by the frame's timer as "trace" (FrameLoop puts it here).
+  if (gl_) return RayTraceFrameStats{counts->rays, counts->reflective, 0.0};
   // The GPU passed the frame's hit shading, so its trace has ended: the time is there.
   const std::optional<double> trace_ms = device_->gpu_ms(trace_tickets_[slot], wait);
   if (!trace_ms) return std::nullopt;

@@ -4,8 +4,10 @@
 //   1. RayListPass (GPU): the pixels that need a ray (SSR-failed, or every reflective one in rt mode)
 //      become a list of mirror rays;
 //   2. the backend traces the list into hit records: a CPU backend (cpu, embree) in persistently
-//      mapped host memory, after the CPU waited for the list; a GPU backend (cuda) in GPU memory
-//      shared with CUDA, with no host wait and no copy (rt::DeviceTracing, cuda::GlBufferInterop);
+//      mapped host memory, after the CPU waited for the list; a GPU backend (cuda, optix) in GPU
+//      memory shared with CUDA, with no host wait and no copy (rt::DeviceTracing,
+//      cuda::GlBufferInterop); the gl backend in GPU memory with its compute shaders, a GL pass
+//      timed as "trace" (rt::GlTracing);
 //   3. HitShadingPass (GPU): the hits are shaded like the raster path into the reflection image.
 // The tracer is not owned: FramePipeline builds one (build_ray_tracer) for reflections and shadow
 // rays alike and updates it once per frame for deforming meshes.
@@ -52,8 +54,8 @@ struct RayTracingSettings {
 struct RayTraceFrameStats {
   std::uint32_t rays_traced = 0;        // rays in the list, all traced
   std::uint32_t reflective_pixels = 0;  // reflective pixels the ray-list pass saw
-  // CPU backends: the backend's trace_closest, wall clock; GPU backends: the trace kernel's GPU
-  // time (CUDA events).
+  // CPU backends: the backend's trace_closest, wall clock; cuda and optix: the trace kernel's GPU
+  // time (CUDA events); gl: the frame timer's "trace" pass (filled in by FrameLoop; 0 here).
   double trace_ms = 0.0;
 };
 
@@ -103,6 +105,7 @@ private:
 
   rt::RayTracer* tracer_;
   rt::DeviceTracing* device_;  // tracer_'s device side, or null
+  rt::GlTracing* gl_;          // tracer_'s GL side (the gl backend), or null
   RayHitBuffers buffers_;
   std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only
   // Per readback slot (run % kFramesInFlight): CPU backends' statistics; a GPU backend's trace
