@@ -25,8 +25,8 @@ class MeshStructure {
 public:
   // `builder`: accel::builder_name of the cpu and cuda backends' BVH (embree and optix build their
   // own: any other name than the default "sah" is a glint::Error there). glint::Error for an unknown
-  // builder or a backend not in kStructureBackends, a backend this build lacks, a GPU backend without a CUDA GPU, an index out of
-  // range, a non-finite vertex or no triangles.
+  // builder, a backend not in kStructureBackends or not in this build, a GPU backend without a CUDA
+  // GPU, an index out of range, a non-finite vertex or no triangles.
   MeshStructure(std::vector<vec3> positions, std::vector<uint32_t> indices, const std::string& builder,
                 const std::string& backend);
 
