@@ -76,7 +76,7 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
     fail("--accel {} is an OptiX structure: it needs --backend optix", options.accel);
   } else {
     if (options.backend == "embree" && options.accel != "sah")
-      fail("--accel {} applies to the cpu and cuda backends; the embree backend builds its own structures",
+      fail("--accel {} applies to the cpu, cuda and gl backends; the embree backend builds its own structures",
            options.accel);
     settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
   }
@@ -164,12 +164,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--backend", options.backend,
                       "Ray tracing backend for hybrid and rt reflections and --shadows rt|hybrid: cpu (glint's own "
-                      "structures on the CPU), embree, or cuda (glint's own structures on the GPU; needs a CUDA GPU), "
-                      "or optix (NVIDIA OptiX's; needs a build with OptiX, docs/optix.md)")
-      ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix"}))
+                      "structures on the CPU), embree, cuda (glint's own structures on the GPU; needs a CUDA GPU), "
+                      "optix (NVIDIA OptiX's; needs a build with OptiX, docs/optix.md) or gl (glint's own structures "
+                      "traced in OpenGL compute shaders, built on the CPU)")
+      ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix", "gl"}))
       ->capture_default_str();
   command->add_option("--accel", options.accel,
-                      "Structure of the cpu and cuda backends' per-mesh BVHs: " + builder_names() +
+                      "Structure of the cpu, cuda and gl backends' per-mesh BVHs: " + builder_names() +
                           "; of the optix backend: optix-fasttrace (the default there) or optix-fastbuild")
       ->check([](const std::string& name) {
         if (rt::is_optix_accel_name(name)) return std::string();
@@ -260,9 +261,10 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command
       ->add_option("--primary", options.primary,
-                   "With --gbuffer visibility, how the triangle ids are made: raster (the id draw) or rt (a camera "
-                   "ray per pixel through the --backend tracer); an experiment (docs/render.md)")
-      ->check(CLI::IsMember({"raster", "rt"}))
+                   "With --gbuffer visibility, how the triangle ids are made: raster (the id draw), rt (a camera "
+                   "ray per pixel through the --backend tracer) or compute (a compute-shader rasteriser); "
+                   "experiments (docs/render.md)")
+      ->check(CLI::IsMember({"raster", "rt", "compute"}))
       ->capture_default_str();
   command
       ->add_option("--shadows", options.shadows,

@@ -37,6 +37,7 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
                          : std::nullopt) {
   if (settings_.gbuffer == GBufferMethod::visibility) {
     if (settings_.primary == PrimaryVisibility::raster) visibility_ids_.emplace(targets_);
+    if (settings_.primary == PrimaryVisibility::compute) compute_visibility_.emplace(targets_, gpu_scene_);
     visibility_gbuffer_.emplace(targets_);
   } else {
     gbuffer_.emplace(targets_);
@@ -62,6 +63,8 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
       primary_rays_->run();
     else if (visibility_ids_)
       visibility_ids_->run(gpu_scene_);
+    else if (compute_visibility_)
+      compute_visibility_->run();
     else
       fail("raster pipeline: ray-traced primary visibility without a ray tracer (trace_primary_visibility)");
     visibility_gbuffer_->run(gpu_scene_);

@@ -11,6 +11,7 @@
 #include "core/image.h"
 #include "gl/gl_objects.h"
 #include "gl/gpu_timer.h"
+#include "render/compute_visibility_pass.h"
 #include "render/frame_constants.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -59,6 +60,8 @@ public:
   void trace_primary_visibility(rt::RayTracer& tracer);
   // The primary rays (PrimaryVisibility::rt after trace_primary_visibility), for tests; else null.
   const PrimaryRayPass* primary_rays() const { return primary_rays_ ? &*primary_rays_ : nullptr; }
+  // The compute rasteriser (PrimaryVisibility::compute), for tests; else null.
+  const ComputeVisibilityPass* compute_visibility() const { return compute_visibility_ ? &*compute_visibility_ : nullptr; }
 
   GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
   GLuint world_position() const { return targets_.world_position.id(); }
@@ -95,6 +98,7 @@ private:
   std::optional<VisibilityIdPass> visibility_ids_;
   std::optional<VisibilityGBufferPass> visibility_gbuffer_;
   std::optional<PrimaryRayPass> primary_rays_;  // PrimaryVisibility::rt instead of visibility_ids_
+  std::optional<ComputeVisibilityPass> compute_visibility_;  // PrimaryVisibility::compute instead of visibility_ids_
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;

@@ -45,14 +45,15 @@ std::string_view primary_visibility_name(PrimaryVisibility primary) {
   switch (primary) {
     case PrimaryVisibility::raster: return "raster";
     case PrimaryVisibility::rt: return "rt";
+    case PrimaryVisibility::compute: return "compute";
   }
   return "unknown";
 }
 
 PrimaryVisibility parse_primary_visibility(std::string_view name) {
-  for (const PrimaryVisibility primary : {PrimaryVisibility::raster, PrimaryVisibility::rt})
+  for (const PrimaryVisibility primary : {PrimaryVisibility::raster, PrimaryVisibility::rt, PrimaryVisibility::compute})
     if (primary_visibility_name(primary) == name) return primary;
-  fail("raster settings: unknown primary visibility '{}' (known: raster, rt)", name);
+  fail("raster settings: unknown primary visibility '{}' (known: raster, rt, compute)", name);
 }
 
 void RasterSettings::validate() const {
@@ -61,6 +62,8 @@ void RasterSettings::validate() const {
     fail("raster settings: max_texture_layer_size = {} must be at least 1", max_texture_layer_size);
   if (primary == PrimaryVisibility::rt && gbuffer != GBufferMethod::visibility)
     fail("raster settings: ray-traced primary visibility needs the visibility G-buffer (--gbuffer visibility)");
+  if (primary == PrimaryVisibility::compute && gbuffer != GBufferMethod::visibility)
+    fail("raster settings: compute-rasterised primary visibility needs the visibility G-buffer (--gbuffer visibility)");
   require_non_negative(pcf_radius_texels, "pcf_radius_texels");
   require_non_negative(constant_bias_texels, "constant_bias_texels");
   require_non_negative(slope_bias_texels, "slope_bias_texels");

@@ -36,9 +36,12 @@ GBufferMethod parse_gbuffer_method(std::string_view name);
 // An experiment (issue 19 item 4): on the H100 the G-buffer pass takes 0.86 instead of 1.16 ms, but
 // the frame is not faster at 1280x720 (the camera rays add a CUDA-GL hand-over; docs/render.md,
 // "Ray-traced primary visibility"), so raster is the default everywhere.
-enum class PrimaryVisibility { raster, rt };
+//   compute  a compute-shader rasteriser (ComputeVisibilityPass) writes the same ids and depth: compute
+//           work runs on every SM, vertex/fragment work on few of the H100's (docs/render.md,
+//           "Compute-rasterised primary visibility")
+enum class PrimaryVisibility { raster, rt, compute };
 
-// "raster", "rt"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
+// "raster", "rt", "compute"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
 std::string_view primary_visibility_name(PrimaryVisibility primary);
 PrimaryVisibility parse_primary_visibility(std::string_view name);
 
@@ -46,7 +49,7 @@ struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels
   ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
   GBufferMethod gbuffer = GBufferMethod::raster;
-  PrimaryVisibility primary = PrimaryVisibility::raster;  // rt: needs gbuffer visibility and a tracer
+  PrimaryVisibility primary = PrimaryVisibility::raster;  // rt, compute: need gbuffer visibility (rt: and a tracer)
   float pcf_radius_texels = 1.5f;     // 0 = one shadow sample (hard edges), else 20-sample PCF
   float constant_bias_texels = 0.5f;  // distance bias at normal incidence
   float slope_bias_texels = 1.0f;     // times tan(angle between normal and light) x (1 + PCF radius)

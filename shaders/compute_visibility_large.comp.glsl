@@ -1,0 +1,103 @@
+#version 450 core
+#extension GL_ARB_gpu_shader_int64 : require
+// Compute rasteriser, deferred triangles (ComputeVisibilityPass, both rounds): one invocation per
+// triangle the per-triangle dispatch left (large on screen, or reaching in front of the near plane or
+// out of the guard band). Round 0 clips it to the near plane and the guard band when needed, fans
+// the polygon into pieces and writes them to the large-triangle list for the tile dispatch; when
+// the list is full, the invocation rasterises the pieces itself and marks the triangle kOverflowed,
+// and does so again in round 1.
+layout(local_size_x = 64) in;
+
+#include "include/frame_constants.glsl"
+#include "include/scene_geometry.glsl"
+#include "include/scene_instances.glsl"
+#include "include/compute_visibility_buffers.glsl"
+#include "include/compute_raster.glsl"
+#include "include/compute_raster_large.glsl"
+
+uniform uint large_capacity;
+
+// A triangle clipped by 5 planes: 3 corners, at most one more per plane; 2 spare for rounding on
+// nearly degenerate polygons (writes beyond are dropped).
+const int kMaxPolygon = 10;
+
+// Signed distance to clipping plane `plane` (the near plane, then the guard band's sides): >= 0 inside.
+float clip_distance(vec4 p, int plane) {
+  precise float d;
+  if (plane == 0) d = p.z + p.w;
+  else if (plane == 1) d = kGuardBand * p.w - p.x;
+  else if (plane == 2) d = kGuardBand * p.w + p.x;
+  else if (plane == 3) d = kGuardBand * p.w - p.y;
+  else d = kGuardBand * p.w + p.y;
+  return d;
+}
+
+// Where an edge crosses a plane, always computed from its inside end: the two triangles sharing
+// the edge get the same point, so their pieces still meet.
+vec4 edge_crossing(vec4 inside, float d_inside, vec4 outside, float d_outside) {
+  precise const vec4 p = mix(inside, outside, d_inside / (d_inside - d_outside));
+  return p;
+}
+
+// The triangle's polygon inside the near plane and the guard band (Sutherland-Hodgman); its size,
+// 0 when nothing is left. A triangle that needs no clipping comes back as it is.
+int clipped_polygon(uint triangle, out vec4 polygon[kMaxPolygon]) {
+  vec4 corner[3];
+  fetch_triangle(triangle, corner);
+  for (int i = 0; i < 3; ++i) polygon[i] = corner[i];
+  if (!needs_clipping(corner[0]) && !needs_clipping(corner[1]) && !needs_clipping(corner[2])) return 3;
+  int size = 3;
+  for (int plane = 0; plane < 5; ++plane) {
+    vec4 clipped[kMaxPolygon];
+    int count = 0;
+    for (int i = 0; i < size; ++i) {
+      const vec4 p = polygon[i], q = polygon[i + 1 == size ? 0 : i + 1];
+      const float dp = clip_distance(p, plane), dq = clip_distance(q, plane);
+      if (dp >= 0.0 && count < kMaxPolygon) clipped[count++] = p;
+      if ((dp >= 0.0) != (dq >= 0.0) && count < kMaxPolygon)
+        clipped[count++] = dp >= 0.0 ? edge_crossing(p, dp, q, dq) : edge_crossing(q, dq, p, dp);
+    }
+    polygon = clipped;
+    size = count;
+    if (size < 3) return 0;
+  }
+  return size;
+}
+
+const LargeTriangle kEmptyEntry = LargeTriangle(ivec4(0), ivec4(0), vec4(0.0), ivec4(0, 0, -1, -1));
+
+void rasterise_deferred(uint slot) {
+  const uint entry = deferred[slot];
+  const uint triangle = entry & ~kOverflowed;
+  if (raster_round != 0u && (entry & kOverflowed) == 0u) return;  // the tile dispatch draws it
+  vec4 polygon[kMaxPolygon];
+  const int size = clipped_polygon(triangle, polygon);
+  if (size < 3) return;
+  const uint pieces = uint(size - 2);  // a fan around corner 0
+  ScreenTriangle t;
+  if (raster_round != 0u) {
+    for (uint k = 0u; k < pieces; ++k)
+      if (setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t)) raster_box(t, triangle);
+    return;
+  }
+  const uint first = atomicAdd(large_count, pieces);
+  const bool listed = first + pieces <= large_capacity;
+  for (uint k = 0u; k < pieces; ++k) {
+    const bool covers = setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t);
+    if (listed) {
+      large_triangles[first + k] = covers ? pack_large_triangle(t, triangle) : kEmptyEntry;
+    } else {
+      if (first + k < large_capacity) large_triangles[first + k] = kEmptyEntry;  // the scan reads every slot
+      if (covers) raster_box(t, triangle);
+    }
+  }
+  if (!listed) {
+    deferred[slot] = entry | kOverflowed;
+    atomicAdd(overflowed, 1u);
+  }
+}
+
+void main() {
+  const uint threads = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  for (uint slot = gl_GlobalInvocationID.x; slot < deferred_count; slot += threads) rasterise_deferred(slot);
+}

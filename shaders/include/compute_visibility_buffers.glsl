@@ -1,0 +1,51 @@
+// The buffers of the compute rasteriser (ComputeVisibilityPass, src/render/compute_visibility_pass.*;
+// binding numbers kDepthKeyBinding.. there). A shader uses the ones it needs; the others stay inactive.
+//   depth_keys  one per pixel (GL rows, y * width + x): the float bits of the nearest window depth
+//               (non-negative floats order as their bits), 0xFFFFFFFF where nothing was drawn
+//   winners     one per pixel: the draw-order number of the triangle kept there (instance's first
+//               triangle + triangle in its mesh), 0xFFFFFFFF where nothing was drawn
+//   deferred    draw-order numbers of the triangles the per-triangle dispatch left to the large one
+//               (large on screen, or to be clipped); kOverflowed is set on those that found the
+//               large-triangle list full and are rasterised by their own invocation
+//   large_triangles, tile_starts   the large-triangle list and each entry's first tile
+//   counters    list sizes and the indirect dispatches' arguments
+//   instance_first_triangle   instance i's triangles are [first[i], first[i + 1]) in draw order
+
+// A large triangle (or one piece of a clipped one), set up: corners in window space at 1/256 pixel,
+// counter-clockwise; their window depths; the pixel box (x0, y0, x1, y1 inclusive, in the viewport).
+struct LargeTriangle {
+  ivec4 corners_ab;       // a.xy, b.xy
+  ivec4 corner_c_number;  // c.xy, draw-order number, unused
+  vec4 depths;            // a, b, c, unused
+  ivec4 box;
+};
+
+layout(std430, binding = 12) buffer DepthKeys { uint depth_keys[]; };
+layout(std430, binding = 13) buffer Winners { uint winners[]; };
+layout(std430, binding = 14) buffer LargeTriangles { LargeTriangle large_triangles[]; };
+layout(std430, binding = 15) buffer TileStarts { uint tile_starts[]; };
+layout(std430, binding = 16) buffer Counters {  // the twin of Counters in compute_visibility_pass.cpp
+  uint large_count;     // entries asked for (beyond the capacity: some triangles overflowed)
+  uint overflowed;      // triangles rasterised by their own invocation
+  uint tile_count;
+  uint deferred_count;
+  uint tile_dispatch[4];      // glDispatchComputeIndirect's x, y, z (and padding)
+  uint deferred_dispatch[4];  // x grows by one per 64 deferred triangles, up to kMaxGroupsX; y = z = 1
+};
+layout(std430, binding = 17) readonly buffer InstanceFirstTriangle { uint instance_first_triangle[]; };
+layout(std430, binding = 18) buffer Deferred { uint deferred[]; };
+
+const uint kNothingDrawn = 0xFFFFFFFFu;
+const uint kOverflowed = 0x80000000u;  // in deferred[]; triangle numbers stay below it
+const uint kMaxGroupsX = 65535u;       // GL's guaranteed limit per dispatch dimension
+const uint kDeferredGroupSize = 64u;   // compute_visibility_large.comp.glsl
+
+// The instance whose triangles hold draw-order number `triangle` (instance_count >= 1).
+uint instance_of_triangle(uint triangle, uint instance_count) {
+  uint lo = 0u, hi = instance_count - 1u;
+  while (lo < hi) {
+    const uint mid = (lo + hi + 1u) >> 1;
+    if (instance_first_triangle[mid] <= triangle) lo = mid; else hi = mid - 1u;
+  }
+  return lo;
+}

@@ -1,0 +1,84 @@
+#pragma once
+// ComputeVisibilityPass: the visibility G-buffer's ids rasterised by compute shaders instead of the
+// id draw (PrimaryVisibility::compute, docs/render.md "Compute-rasterised primary visibility"). It
+// writes exactly what VisibilityIdPass writes, so VisibilityGBufferPass and every later pass read the
+// same inputs:
+//   inputs:  GpuScene (vertices read every frame: deforming meshes change them), FrameConstants UBO
+//   outputs: RasterTargets visibility_id ({instance + 1, triangle}, {0, 0} background) and depth
+//            (window-space z in [0, 1], 1 where nothing was drawn, as the id draw leaves it)
+// GL compute work spreads over every SM of a GPU, where vertex and fragment work may not (the H100
+// runs them on a few). A pixel keeps the nearest depth (round 0: 32-bit atomicMin on the depth's
+// float bits), then, among the triangles with exactly that depth there, the first in draw order
+// (round 1: atomicMin on the triangle's number over all instances), as the id draw's GL_LESS keeps
+// the first of equal depths. Two 32-bit rounds instead of one 64-bit atomic, because Mesa's llvmpipe
+// (the test machines) has no 64-bit atomics. Dispatches of run() (shaders/compute_visibility_*):
+//   triangles  one invocation per triangle of every instance, in draw order: transform, cull outside
+//              a frustum plane or covering no pixel centre, snap the corners to 1/256 pixel; a small
+//              triangle (at most 64 candidate centres) is rasterised there with 32-bit edge
+//              functions; the others (larger, or in front of the near plane or beyond the guard band)
+//              go to the deferred list (round 0)
+//   large      one invocation per deferred triangle: clip to the near plane and the guard band, fan
+//              the polygon, append the pieces to the large-triangle list (round 0)
+//   scan       one work group: each entry's 8x8-pixel tiles, prefix-summed, the tile dispatch's size
+//   tiles      one work group per (entry, tile), one invocation per pixel, 64-bit edge functions
+//   triangles, large and tiles again for round 1 over the same lists; then a full-screen draw
+//   writes the id image and the depth (compute shaders cannot write a depth texture).
+// Coverage is exact (integer edge functions at pixel centres) with llvmpipe's fill rule, so
+// triangles sharing an edge leave no crack and cover no centre twice. When the large-triangle list
+// is full, a deferred triangle is rasterised by its own invocation in both rounds: slow but correct.
+#include "gl/gl_objects.h"
+#include "gl/shader_program.h"
+#include "render/gpu_scene.h"
+#include "render/raster_targets.h"
+
+#include <cstdint>
+
+namespace glint::render {
+
+struct ComputeVisibilityOptions {
+  // Entries of the large-triangle list; 0: one per 8 pixels, at least 16384 (the .cpp says why).
+  // Tests make it small to exercise the full-list path.
+  std::uint32_t large_triangle_capacity = 0;
+};
+
+// What the last run's large-triangle list held (read back: tests and debugging only).
+struct ComputeVisibilityStats {
+  std::uint32_t deferred = 0;       // triangles left to the large-triangle dispatch
+  std::uint32_t large_entries = 0;  // entries written (clipped triangles give up to 6)
+  std::uint32_t tiles = 0;          // 8x8-pixel tiles the tile dispatch ran over
+  std::uint32_t overflowed = 0;     // triangles rasterised by their own invocation (list full)
+};
+
+class ComputeVisibilityPass {
+public:
+  // The targets must hold visibility_id (RasterTargets(w, h, true)) and outlive the pass, as must
+  // `scene` (its instance-to-mesh assignment is fixed here; vertices and transforms are read every
+  // run). glint::Error otherwise. Needs a current GL context.
+  ComputeVisibilityPass(const RasterTargets& targets, const GpuScene& scene, const ComputeVisibilityOptions& options = {});
+
+  // Writes visibility_id and depth for this frame (FrameConstants bound at kFrameConstantsBinding).
+  // Ends with a barrier that makes the id image visible to image loads.
+  void run();
+
+  std::uint32_t large_triangle_capacity() const { return capacity_; }
+  std::uint32_t triangle_count() const { return triangle_count_; }
+  // Waits for the GPU.
+  ComputeVisibilityStats read_stats() const;
+
+private:
+  const RasterTargets* targets_;
+  const GpuScene* scene_;
+  std::uint32_t triangle_count_ = 0;
+  std::uint32_t instance_count_ = 0;
+  std::uint32_t capacity_ = 0;
+  GlBuffer depth_keys_, winners_;          // one uint per pixel each
+  GlBuffer large_triangles_, tile_starts_;  // capacity_ entries each
+  GlBuffer counters_;                       // ComputeVisibilityCounters (the .cpp), indirect dispatch inside
+  GlBuffer instance_first_triangle_;        // instance_count_ + 1 uints
+  GlBuffer deferred_;                       // triangle_count_ + 1 uints: room for every triangle
+  ShaderProgram triangle_program_, large_program_, scan_program_, tile_program_, resolve_program_;
+  GlFramebuffer framebuffer_;
+  GlVertexArray empty_vertex_array_;
+};
+
+}  // namespace glint::render
