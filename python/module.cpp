@@ -177,7 +177,8 @@ PYBIND11_MODULE(glint, m) {
 
   m.def("render", &render_scene_frame, py::arg("scene") = defaults.scene, py::arg("frame") = 0,
         py::arg("width") = defaults.width, py::arg("height") = defaults.height,
-        py::arg("reflections") = defaults.reflections, py::arg("backend") = defaults.backend, py::arg("accel") = defaults.accel, py::arg("update") = defaults.update,
+        py::arg("reflections") = defaults.reflections, py::arg("backend") = defaults.backend,
+        py::arg("accel") = defaults.accel, py::arg("update") = defaults.update,
         py::arg("shadows") = defaults.shadows, py::arg("gbuffer") = defaults.gbuffer, py::arg("deform") = true,
         "One frame of the scene's walkthrough as `glint render --frames FRAME` renders it (same options, same "
         "pixels): a uint8 array (height, width, 4), RGBA, top row first.");
