@@ -6,6 +6,7 @@
 #include "app/devices_command.h"
 #include "app/info_command.h"
 #include "app/render_command.h"
+#include "app/view_command.h"
 #include "core/error.h"
 #include "core/interruption.h"
 #include "core/log.h"
@@ -58,6 +59,8 @@ int run_cli(int argc, char** argv) {
   add_accel_bench_command(app, accel_bench);
   BenchOptions bench;
   add_bench_command(app, bench);
+  ViewOptions view;
+  add_view_command(app, view);
 
   try {
     app.parse(argc, argv);
@@ -81,6 +84,7 @@ int run_cli(int argc, char** argv) {
       return run_render_command(render);
     }
     if (app.got_subcommand("compare")) return run_compare_command(compare);
+    if (app.got_subcommand("view")) return run_view_command(view);
     if (app.got_subcommand("accel-bench")) return run_accel_bench_command(accel_bench);
     if (app.got_subcommand("bench")) {
       bench.command_line = command_line_text(argc, argv);

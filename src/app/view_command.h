@@ -1,0 +1,24 @@
+#pragma once
+// `glint view [scene]`: the interactive viewer (src/viewer/, docs/viewer.md): a window with panels
+// running the frame loop of `glint render`, live settings, debug views, stats, screenshots, and
+// `--script FILE` to drive it without input.
+#include "app/render_command.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace glint {
+
+struct ViewOptions {
+  RenderOptions render;              // scene and the starting settings (render's defaults)
+  std::string script;                // --script FILE
+  int frame = 0;                     // --frame: the walkthrough frame shown first
+  std::vector<std::string> settings;  // --set NAME=VALUE, applied in order
+};
+
+void add_view_command(CLI::App& app, ViewOptions& options);
+int run_view_command(const ViewOptions& options);
+
+}  // namespace glint

@@ -1,0 +1,77 @@
+#include "viewer/glfw_window.h"
+
+#include "core/error.h"
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+
+namespace glint::viewer {
+namespace {
+
+std::string last_glfw_error() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  std::string text = description != nullptr ? description : "no reason given";
+  while (!text.empty() && text.back() == ' ') text.pop_back();  // GLFW ends some messages with a blank
+  return text;
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
+  if (glfwInit() == GLFW_FALSE) {
+    const char* display = std::getenv("DISPLAY");
+    fail("view: no display to open a window on ({}; DISPLAY is {}): run it on a desktop, over ssh -X, or under "
+         "xvfb-run -a",
+         last_glfw_error(), display != nullptr && *display != '\0' ? display : "not set");
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window_ == nullptr) {
+    const std::string reason = last_glfw_error();
+    glfwTerminate();
+    fail("view: the display gives no OpenGL 4.5 core context ({})", reason);
+  }
+  glfwSetWindowUserPointer(window_, this);
+  // Set before ImGui's backend installs its callbacks, which call this one after its own.
+  glfwSetScrollCallback(window_, [](GLFWwindow* window, double, double y) {
+    static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window))->scroll_ += static_cast<float>(y);
+  });
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(0);  // frames as fast as they render: the stats measure the renderer, not the display
+  renderer_ = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+}
+
+GlfwWindow::~GlfwWindow() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool GlfwWindow::close_requested() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+void GlfwWindow::poll_events() { glfwPollEvents(); }
+void GlfwWindow::swap_buffers() { glfwSwapBuffers(window_); }
+
+int GlfwWindow::framebuffer_width() const {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  return width;
+}
+
+int GlfwWindow::framebuffer_height() const {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  return height;
+}
+
+float GlfwWindow::take_scroll() {
+  const float notches = scroll_;
+  scroll_ = 0.0f;
+  return notches;
+}
+
+}  // namespace glint::viewer

@@ -1,0 +1,35 @@
+#pragma once
+// The viewer's window: GLFW with an OpenGL 4.5 core context made current on this thread, which the
+// frame pipeline renders on exactly as on the headless EGL context of `glint render` (it needs only
+// a current 4.5 core context; its passes draw into their own framebuffers). Without a display (no
+// DISPLAY, an X server that cannot be reached) construction is one glint::Error saying so.
+#include <string>
+
+struct GLFWwindow;
+
+namespace glint::viewer {
+
+class GlfwWindow {
+public:
+  GlfwWindow(const std::string& title, int width, int height);
+  ~GlfwWindow();
+  GlfwWindow(const GlfwWindow&) = delete;
+  GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  bool close_requested() const;
+  void poll_events();
+  void swap_buffers();
+  int framebuffer_width() const;
+  int framebuffer_height() const;
+  // Mouse-wheel notches since the last call (vertical).
+  float take_scroll();
+  const std::string& renderer() const { return renderer_; }  // GL_RENDERER
+
+private:
+  GLFWwindow* window_ = nullptr;
+  std::string renderer_;
+  float scroll_ = 0.0f;
+};
+
+}  // namespace glint::viewer

@@ -1,0 +1,35 @@
+#pragma once
+// Dear ImGui on the viewer's window (Debian's libimgui: its GLFW and OpenGL 3 backends), and the
+// texture the current picture is shown from. begin_frame() starts the panels; end_frame() draws
+// the picture behind them, fitted to the window with its aspect kept, then the panels.
+#include "core/image.h"
+
+#include <epoxy/gl.h>
+
+namespace glint::viewer {
+
+class GlfwWindow;
+
+class ImGuiLayer {
+public:
+  explicit ImGuiLayer(GlfwWindow& window);
+  ~ImGuiLayer();
+  ImGuiLayer(const ImGuiLayer&) = delete;
+  ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+  // Replaces the picture shown behind the panels.
+  void show(const ImageRgba8& image);
+  void begin_frame();
+  void end_frame();
+  // Whether the panels take the mouse or the keyboard now (the camera then ignores them).
+  bool wants_mouse() const;
+  bool wants_keyboard() const;
+
+private:
+  GlfwWindow* window_;
+  GLuint texture_ = 0;
+  int texture_width_ = 0;
+  int texture_height_ = 0;
+};
+
+}  // namespace glint::viewer
