@@ -189,11 +189,11 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                       "Simplified scene (Figs. 8, 9, 10, 12, Table II): atrium-simple or a scene file")
       ->capture_default_str();
   command->add_option("--backends", options.backends,
-                      "Ray tracing backends, comma-separated: cpu, embree, cuda, optix (unavailable ones are "
+                      "Ray tracing backends, comma-separated: cpu, embree, cuda, optix, gl (unavailable ones are "
                       "reported as skipped)")
       ->capture_default_str();
   command->add_option("--accels", options.accels,
-                      "Structures of the cpu and cuda backends, comma-separated (embree and optix build their own)")
+                      "Structures of the cpu, cuda and gl backends, comma-separated (embree and optix build their own)")
       ->capture_default_str();
   command->add_option("--updates", options.updates, "Update policies of the deforming cells: rebuild, refit, auto")
       ->capture_default_str();

@@ -12,6 +12,7 @@ std::optional<std::string> backend_unavailable_reason(const std::string& backend
     if (query_cuda_devices(&why_none).empty())
       return why_none.empty() ? std::string("no CUDA GPU") : why_none;
   }
+  if (backend == "gl") return std::nullopt;  // made on the cells' GL context; it has no other need
   try {
     (void)rt::make_ray_tracer(backend);
   } catch (const Error& error) {

@@ -93,7 +93,9 @@ private:
 
 }  // namespace
 
-bool backend_takes_accel(const std::string& backend) { return backend == "cpu" || backend == "cuda"; }
+bool backend_takes_accel(const std::string& backend) {
+  return backend == "cpu" || backend == "cuda" || backend == "gl";
+}
 
 std::vector<Structure> structures_of(const std::vector<std::string>& backends, const std::vector<std::string>& accels) {
   std::vector<Structure> structures;
