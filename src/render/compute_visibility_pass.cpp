@@ -144,24 +144,35 @@ void ComputeVisibilityPass::run() {
   const GLuint groups_x = std::min(groups, kMaxGroupsX);
   const GLuint groups_y = work_groups(groups, groups_x);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the clears, and deformed vertices
-  for (GLuint round = 0; round < 2; ++round) {
+  const auto set_round = [this](GLuint round) {
     for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_})
       set_uint(*program, "raster_round", round);
-    triangle_program_.use();
-    if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    large_program_.use();
-    glDispatchComputeIndirect(kDeferredDispatchOffset);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    if (round == 0) {  // the list is made in round 0 and kept for round 1
-      scan_program_.use();
-      glDispatchCompute(1, 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    }
-    tile_program_.use();
-    glDispatchComputeIndirect(kTileDispatchOffset);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
+  };
+  // Round 0: nearest depths, and the lists (each dispatch reads what the one before wrote).
+  constexpr GLbitfield kStorageAndCommands = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
+  set_round(0);
+  triangle_program_.use();
+  if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
+  glMemoryBarrier(kStorageAndCommands);
+  large_program_.use();
+  glDispatchComputeIndirect(kDeferredDispatchOffset);
+  glMemoryBarrier(kStorageAndCommands);
+  scan_program_.use();
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(kStorageAndCommands);
+  tile_program_.use();
+  glDispatchComputeIndirect(kTileDispatchOffset);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // Round 1 over the same lists: the three dispatches only read the final depths and lower the
+  // winners, so none waits for another.
+  set_round(1);
+  triangle_program_.use();
+  if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
+  large_program_.use();
+  glDispatchComputeIndirect(kDeferredDispatchOffset);
+  tile_program_.use();
+  glDispatchComputeIndirect(kTileDispatchOffset);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
   // Ids and depth through the framebuffer the id draw would use: every pixel written, depth
