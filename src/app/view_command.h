@@ -12,7 +12,11 @@
 namespace glint {
 
 struct ViewOptions {
-  RenderOptions render;              // scene and the starting settings (render's defaults)
+  ViewOptions() {
+    render.width = 960;  // with the panel columns the window fits a 1920 x 1080 screen
+    render.height = 540;
+  }
+  RenderOptions render;              // scene and the starting settings (render's defaults, 960 x 540)
   std::string script;                // --script FILE
   int frame = 0;                     // --frame: the walkthrough frame shown first
   std::vector<std::string> settings;  // --set NAME=VALUE, applied in order

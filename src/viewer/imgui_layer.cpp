@@ -51,13 +51,14 @@ void ImGuiLayer::begin_frame() {
   ImGui::NewFrame();
 }
 
-void ImGuiLayer::end_frame() {
+void ImGuiLayer::end_frame(float side_margin) {
   const float width = static_cast<float>(window_->framebuffer_width());
   const float height = static_cast<float>(window_->framebuffer_height());
-  if (texture_ != 0 && width > 0.0f && height > 0.0f) {
-    const float scale = std::min(width / static_cast<float>(texture_width_), height / static_cast<float>(texture_height_));
+  const float area = width - 2.0f * side_margin;
+  if (texture_ != 0 && area > 0.0f && height > 0.0f) {
+    const float scale = std::min(area / static_cast<float>(texture_width_), height / static_cast<float>(texture_height_));
     const ImVec2 size(static_cast<float>(texture_width_) * scale, static_cast<float>(texture_height_) * scale);
-    const ImVec2 corner((width - size.x) * 0.5f, (height - size.y) * 0.5f);
+    const ImVec2 corner(side_margin + (area - size.x) * 0.5f, (height - size.y) * 0.5f);
     ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), corner,
                                              ImVec2(corner.x + size.x, corner.y + size.y));
   }

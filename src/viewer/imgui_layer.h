@@ -20,7 +20,8 @@ public:
   // Replaces the picture shown behind the panels.
   void show(const ImageRgba8& image);
   void begin_frame();
-  void end_frame();
+  // Draws the picture fitted between `side_margin` pixels on the left and right (the panel columns).
+  void end_frame(float side_margin);
   // Whether the panels take the mouse or the keyboard now (the camera then ignores them).
   bool wants_mouse() const;
   bool wants_keyboard() const;

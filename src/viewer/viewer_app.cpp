@@ -32,8 +32,8 @@ using Clock = std::chrono::steady_clock;
 class ViewerApp {
 public:
   explicit ViewerApp(const ViewerLaunch& launch)
-      : window_("glint view: " + launch.options.scene, std::max(launch.options.width, 960),
-                std::max(launch.options.height, 540)),
+      : window_("glint view: " + launch.options.scene,
+                launch.options.width + 2 * static_cast<int>(kPanelWidth), std::max(launch.options.height, 720)),
         ui_(window_),
         session_(launch.options, pass_timing_for_renderer(window_.renderer())),
         script_path_(launch.script) {
@@ -76,7 +76,7 @@ public:
         log_warning("view: {}", error.what());
       }
       show_picture();
-      ui_.end_frame();
+      ui_.end_frame(kPanelWidth);
       window_.swap_buffers();
     }
   }

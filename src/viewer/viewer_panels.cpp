@@ -28,7 +28,16 @@ bool choice_combo(const char* label, std::string& value, const std::vector<std::
   return changed;
 }
 
+// The panels' first places: Walkthrough and Settings in a column on the left, View and Stats on the
+// right, the picture between them (ImGuiLayer fits it there); the person may move them afterwards.
+void place_next(bool right, float top, float height) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(right ? display.x - kPanelWidth : 0.0f, top), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, height), ImGuiCond_FirstUseEver);
+}
+
 void walkthrough_panel(const PanelContext& context, ViewerState& state, ViewerRequests& requests) {
+  place_next(false, 0.0f, 250.0f);
   ImGui::Begin("Walkthrough");
   if (ImGui::Button(state.playing ? "Pause" : "Play")) state.playing = !state.playing;
   ImGui::SameLine();
@@ -55,6 +64,7 @@ void walkthrough_panel(const PanelContext& context, ViewerState& state, ViewerRe
 }
 
 void settings_panel(const PanelContext& context, ViewerState& state) {
+  place_next(false, 250.0f, ImGui::GetIO().DisplaySize.y - 250.0f);
   ImGui::Begin("Settings");
   ImGui::TextUnformatted(context.renderer.c_str());
   ImGui::SliderFloat("resolution scale", &state.scale, 0.25f, 2.0f, "%.2f");
@@ -79,6 +89,7 @@ void settings_panel(const PanelContext& context, ViewerState& state) {
 }
 
 void view_panel(const PanelContext& context, ViewerState& state, ViewerRequests& requests) {
+  place_next(true, 0.0f, 170.0f);
   ImGui::Begin("View");
   choice_combo("picture", state.view, view_names());
   if (context.difference != nullptr)
@@ -90,6 +101,7 @@ void view_panel(const PanelContext& context, ViewerState& state, ViewerRequests&
 }
 
 void stats_panel(const PanelContext& context) {
+  place_next(true, 170.0f, ImGui::GetIO().DisplaySize.y - 170.0f);
   ImGui::Begin("Stats");
   const StatsHistory& stats = *context.stats;
   ImGui::Text("%.1f frames per second", stats.frames_per_second());

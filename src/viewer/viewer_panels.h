@@ -13,6 +13,9 @@
 
 namespace glint::viewer {
 
+// Width of the panel columns on either side of the picture, in pixels.
+inline constexpr float kPanelWidth = 330.0f;
+
 struct PanelContext {
   int frame_count = 1;
   std::string renderer;              // GL_RENDERER

@@ -51,8 +51,9 @@ Number parse_number(std::string_view name, std::string_view text, const ViewerSe
   const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || error != std::errc() || stop != text.data() + text.size())
     fail("{}: \"{}\" is not a{} number", name, text, std::is_integral_v<Number> ? "n integer" : "");
-  if (!std::isfinite(static_cast<double>(value)) || static_cast<double>(value) < setting.min ||
-      static_cast<double>(value) > setting.max)
+  // Compared in the field's own type, so that a float range's ends (0.01) are inside it.
+  if (!std::isfinite(static_cast<double>(value)) || value < static_cast<Number>(setting.min) ||
+      value > static_cast<Number>(setting.max))
     fail("{}: {} is outside {} to {}", name, text, setting.min, setting.max);
   return value;
 }
