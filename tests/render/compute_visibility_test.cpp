@@ -439,6 +439,31 @@ TEST_F(ComputeVisibility, TessellatedQuadOnPixelCentresHasNoCracks) {
   }
 }
 
+// Two instances of one quad at the same place tie at every pixel with the very same depth bits: the
+// id draw's GL_LESS keeps the first drawn, and so must round 1 (the smallest draw-order number among
+// the triangles at the kept depth). The wall is drawn twice too. With the last writer kept instead,
+// the copies took all 1045 of those pixels (llvmpipe).
+TEST_F(ComputeVisibility, ExactDepthTiesGoToTheFirstInDrawOrder) {
+  Scene scene = instanced_scene();
+  for (const std::uint32_t original : {1u, 2u}) {
+    Instance copy = scene.instances[original];
+    copy.name += " again";
+    scene.instances.push_back(copy);
+  }
+  const FrameState state = instanced_scene_camera(scene);
+  const Frame raster = render_frame(scene, state, 160, 96, PrimaryVisibility::raster);
+  const Frame computed = render_frame(scene, state, 160, 96, PrimaryVisibility::compute);
+  const IdComparison c = compare(scene, raster, computed);
+  expect_same_visibility(c, 160 * 96 / 2);
+  int copies = 0, originals = 0;
+  for (const glm::uvec2 id : computed.ids) {
+    copies += id.x > 5u;
+    originals += id.x == 2u || id.x == 3u;
+  }
+  EXPECT_EQ(copies, 0);
+  EXPECT_GT(originals, 160 * 96 / 20);
+}
+
 // The pass alone with a given large-triangle capacity: ids and depth.
 struct PassOutput {
   std::vector<glm::uvec2> ids;
