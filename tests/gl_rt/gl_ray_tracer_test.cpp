@@ -273,6 +273,45 @@ TEST_F(GlRayTracerTest, SbvhRefitIsRefusedAndLeavesTheStructuresAsTheyWere) {
   EXPECT_EQ(compare_hits(scene, rays, brute_force_hits(scene, rays), trace(tracer, rays)), "");
 }
 
+// An sbvh rebuild whose split references outgrow the regions laid out at build() lays everything out
+// again: a mesh of small separate triangles (no splits) becomes long overlapping slivers (many).
+TEST_F(GlRayTracerTest, SbvhRebuildThatOutgrowsItsRegionIsLaidOutAgain) {
+  Scene scene = testing::make_instanced_scene();
+  Mesh slivers;
+  slivers.name = "slivers";
+  slivers.material = 1;
+  constexpr uint32_t kTriangles = 64;
+  for (uint32_t i = 0; i < kTriangles; ++i) {
+    const float x = 0.3f * static_cast<float>(i);
+    for (const vec3& p : {vec3(x, 0, 0), vec3(x + 0.1f, 0, 0), vec3(x, 0.1f, 0)}) {
+      slivers.positions.push_back(p + vec3(-8, 6, 3));
+      slivers.normals.push_back(vec3(0, 0, 1));
+    }
+    for (uint32_t k = 0; k < 3; ++k) slivers.indices.push_back(3 * i + k);
+  }
+  scene.meshes.push_back(slivers);
+  const auto mesh = static_cast<uint32_t>(scene.meshes.size() - 1);
+  scene.instances.push_back({"slivers", mesh, mat4(1.0f)});
+  scene.validate();
+  GlRayTracer tracer;
+  tracer.build(scene, with_builder(accel::BvhBuilder::sbvh));
+  const uint64_t bytes_at_build = tracer.stats().memory_bytes;
+  std::vector<vec3>& positions = scene.meshes[mesh].positions;
+  for (uint32_t i = 0; i < kTriangles; ++i) {
+    const float y = 0.05f * static_cast<float>(i);
+    positions[3 * i] = vec3(-8, 6 + y, 3);
+    positions[3 * i + 1] = vec3(12, 6 + y + 2, 3.5f);
+    positions[3 * i + 2] = vec3(-8, 6 + y + 0.3f, 2 + 0.1f * static_cast<float>(i % 7));
+  }
+  const std::vector<uint32_t> dirty{mesh};
+  tracer.update(scene, dirty, UpdatePolicy::rebuild);
+  EXPECT_GT(tracer.stats().memory_bytes, bytes_at_build) << "the slivers' sbvh did not outgrow its region";
+  std::vector<accel::Ray> rays = random_rays(scene, 1500, 13);
+  const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
+  EXPECT_EQ(compare_hits(scene, rays, expected, trace(tracer, rays)), "");
+  EXPECT_EQ(compare_occluded(rays, hit_exists(expected), trace_occluded(tracer, rays)), "");
+}
+
 TEST_F(GlRayTracerTest, UpdateFollowsMovedInstances) {
   Scene scene = testing::make_instanced_scene();
   GlRayTracer tracer;
