@@ -7,7 +7,7 @@ layout(local_size_x = 64) in;
 const bool kAnyHit = true;
 #include "include/gl_rt_kernel.glsl"
 
-layout(std430, binding = 26) writeonly buffer TracerOccluded { uint tracer_occluded[]; };
+layout(std430, binding = 26) writeonly restrict buffer TracerOccluded { uint tracer_occluded[]; };
 
 void main() {
   const uint i = ray_index();

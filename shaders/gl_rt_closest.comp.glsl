@@ -6,7 +6,7 @@ layout(local_size_x = 64) in;
 const bool kAnyHit = false;
 #include "include/gl_rt_kernel.glsl"
 
-layout(std430, binding = 26) writeonly buffer TracerHits { Hit tracer_hits[]; };
+layout(std430, binding = 26) writeonly restrict buffer TracerHits { Hit tracer_hits[]; };
 
 void main() {
   const uint i = ray_index();

@@ -10,9 +10,9 @@ struct Ray {  // accel::Ray
   float t_max;
 };
 
-layout(std430, binding = 25) readonly buffer TracerRays { Ray tracer_rays[]; };
+layout(std430, binding = 25) readonly restrict buffer TracerRays { Ray tracer_rays[]; };
 // The first uint of the caller's count buffer: how many rays the list holds, read here on the GPU.
-layout(std430, binding = 27) readonly buffer TracerRayCount { uint tracer_ray_count; };
+layout(std430, binding = 27) readonly restrict buffer TracerRayCount { uint tracer_ray_count; };
 
 uniform uint ray_base;      // the first ray of this dispatch (a long list takes several)
 uniform uint ray_capacity;  // at most this many rays are traced, whatever the count says

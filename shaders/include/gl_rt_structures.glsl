@@ -3,6 +3,8 @@
 // BLAS in its own region; the meshes' object-space vertices and triangles; one record per instance.
 // Bindings 20..24 and 28 (25..27 in gl_rt_kernel.glsl) are above every binding the renderer's passes
 // use, so a trace leaves their bindings alone. Keep in step with src/gl_rt/gl_rt_bindings.h.
+// `readonly restrict`: nothing writes or aliases them during a trace, which lets a driver read them
+// through its read-only (non-coherent) cache path.
 
 // accel::BvhNode (32 bytes): interior (prim_count == 0): `first` is the left child, the right one
 // follows it; leaf: prim_count entries of the primitive indices from `first`. Indices are local to
@@ -24,13 +26,13 @@ struct TracerInstance {
   uint node_count;       // 0: an empty BLAS, never hit
 };
 
-layout(std430, binding = 20) readonly buffer TracerNodes { BvhNode bvh_nodes[]; };
-layout(std430, binding = 21) readonly buffer TracerPrims { uint bvh_prims[]; };
+layout(std430, binding = 20) readonly restrict buffer TracerNodes { BvhNode bvh_nodes[]; };
+layout(std430, binding = 21) readonly restrict buffer TracerPrims { uint bvh_prims[]; };
 // Object-space positions (w unused) of every mesh, one after the other.
-layout(std430, binding = 22) readonly buffer TracerVertices { vec4 mesh_vertices[]; };
+layout(std430, binding = 22) readonly restrict buffer TracerVertices { vec4 mesh_vertices[]; };
 // Per triangle the indices of its corners in mesh_vertices (the mesh's vertex offset added; w unused).
-layout(std430, binding = 23) readonly buffer TracerTriangles { uvec4 mesh_triangles[]; };
-layout(std430, binding = 24) readonly buffer TracerInstances { TracerInstance tracer_instances[]; };
+layout(std430, binding = 23) readonly restrict buffer TracerTriangles { uvec4 mesh_triangles[]; };
+layout(std430, binding = 24) readonly restrict buffer TracerInstances { TracerInstance tracer_instances[]; };
 
 // Set to 1 by a walk whose stack would overflow (gl_rt_traverse.glsl); the host reads and clears it.
 layout(std430, binding = 28) buffer TracerFlags { uint tracer_stack_overflow; };
