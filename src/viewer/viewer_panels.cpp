@@ -30,6 +30,9 @@ bool choice_combo(const char* label, std::string& value, const std::vector<std::
 
 // The panels' first places: Walkthrough and Settings in a column on the left, View and Stats on the
 // right, the picture between them (ImGuiLayer fits it there); the person may move them afterwards.
+// Controls leave room for their labels ("shadow-cube-draw") in a kPanelWidth column.
+constexpr float kControlWidth = 170.0f;
+
 void place_next(bool right, float top, float height) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(right ? display.x - kPanelWidth : 0.0f, top), ImGuiCond_FirstUseEver);
@@ -39,6 +42,7 @@ void place_next(bool right, float top, float height) {
 void walkthrough_panel(const PanelContext& context, ViewerState& state, ViewerRequests& requests) {
   place_next(false, 0.0f, 250.0f);
   ImGui::Begin("Walkthrough");
+  ImGui::PushItemWidth(kControlWidth);
   if (ImGui::Button(state.playing ? "Pause" : "Play")) state.playing = !state.playing;
   ImGui::SameLine();
   if (state.flying) {
@@ -60,12 +64,14 @@ void walkthrough_panel(const PanelContext& context, ViewerState& state, ViewerRe
   ImGui::InputText("record file", &state.record_path);
   if (ImGui::Button("Save path to scene file")) requests.record_save = true;
   if (ImGui::Button("Reload scene")) requests.reload = true;
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
 void settings_panel(const PanelContext& context, ViewerState& state) {
   place_next(false, 250.0f, ImGui::GetIO().DisplaySize.y - 250.0f);
   ImGui::Begin("Settings");
+  ImGui::PushItemWidth(kControlWidth);
   ImGui::TextUnformatted(context.renderer.c_str());
   ImGui::SliderFloat("resolution scale", &state.scale, 0.25f, 2.0f, "%.2f");
   ImGui::Checkbox("render continuously", &state.continuous);
@@ -85,28 +91,32 @@ void settings_panel(const PanelContext& context, ViewerState& state) {
             std::clamp(value, static_cast<float>(setting.min), static_cast<float>(setting.max));
     }
   }
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
 void view_panel(const PanelContext& context, ViewerState& state, ViewerRequests& requests) {
   place_next(true, 0.0f, 170.0f);
   ImGui::Begin("View");
+  ImGui::PushItemWidth(kControlWidth);
   choice_combo("picture", state.view, view_names());
   if (context.difference != nullptr)
     ImGui::Text("against rt: SSIM %.4f, PSNR %.2f dB", context.difference->ssim, context.difference->psnr);
   ImGui::InputText("screenshot", &state.screenshot_path);
   if (ImGui::Button("Screenshot (P)")) requests.screenshot = true;
   if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
 void stats_panel(const PanelContext& context) {
   place_next(true, 170.0f, ImGui::GetIO().DisplaySize.y - 170.0f);
   ImGui::Begin("Stats");
+  ImGui::PushItemWidth(kControlWidth);
   const StatsHistory& stats = *context.stats;
   ImGui::Text("%.1f frames per second", stats.frames_per_second());
   if (const auto& last = stats.last()) {
-    ImGui::Text("frame %d: GPU passes %.2f ms, latency %.2f ms", last->frame,
+    ImGui::TextWrapped("frame %d: GPU passes %.2f ms, latency %.2f ms", last->frame,
                 static_cast<double>(stats.gpu_total_series().empty() ? 0.0f : stats.gpu_total_series().back()),
                 last->latency_ms);
     if (last->ray_stats)
@@ -128,6 +138,7 @@ void stats_panel(const PanelContext& context) {
     ImGui::PlotLines(label.c_str(), series.data(), static_cast<int>(series.size()), 0, nullptr, 0.0f, FLT_MAX,
                      ImVec2(0, 30));
   }
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 
