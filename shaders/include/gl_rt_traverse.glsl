@@ -12,10 +12,12 @@ const uint kInvalidIndex = 0xFFFFFFFFu;
 // accel::kMaxBvhDepth: a push past it sets tracer_stack_overflow (gl_rt_structures.glsl) and ends that
 // level's walk instead of writing past the stack. glint's builders never get there.
 const uint kStackSize = 64u;
-// The slab test's slack on its far distance. accel::kSlabFarScale is 1 + 3 ulp (2 gamma(3)) for
-// IEEE division; GLSL's division may be off by 2.5 ulp (GLSL 4.50, 4.7.1), so 1 + 6 ulp here: more
-// slack only visits a few more boxes, never changes a hit.
-const float kSlabFarScale = uintBitsToFloat(0x3F800006u);
+// The slab test's slack on its far distance. accel::kSlabFarScale is 1 + 2 gamma(3) = 1 + 3 ulp: each
+// slab distance takes three roundings of at most u = 2^-24 (a subtraction, the inverse, a product).
+// GLSL's division may be off by 2.5 ulp = 5 u (GLSL 4.50, 4.7.1), so each distance here is within
+// gamma(7) and the slack is 1 + 8 ulp >= 1 + 2 gamma(7): more slack only visits a few more boxes,
+// never changes a hit.
+const float kSlabFarScale = uintBitsToFloat(0x3F800008u);
 
 // accel::Hit, also the record the closest-hit kernel writes.
 struct Hit {

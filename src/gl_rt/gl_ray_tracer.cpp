@@ -75,6 +75,7 @@ GlRayTracer::Kernel GlRayTracer::make_kernel(const char* name) {
   return kernel;
 }
 
+// The context is checked before the first member touches GL.
 GlRayTracer::GlRayTracer()
     : closest_((require_gl45_context(), make_kernel("gl_rt_closest.comp.glsl"))),
       any_(make_kernel("gl_rt_any.comp.glsl")),

@@ -16,8 +16,9 @@
 // trace_closest/trace_any stage the rays through scratch GL buffers and read the results back (for
 // tests and benchmarks).
 //
-// Every call needs the GL context that was current when the tracer was made, current again; GL
-// objects die with the tracer, which must die before that context. A trace binds shader-storage
+// Every call needs the GL context that was current when the tracer was made, current again (so the
+// host-side traces, though const, are for one thread at a time); GL objects die with the tracer,
+// which must die before that context. A trace binds shader-storage
 // buffers at bindings 20..28 (gl_rt_bindings.h) and its program; the renderer's bindings are lower.
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
