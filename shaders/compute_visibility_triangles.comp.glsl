@@ -15,6 +15,7 @@ layout(local_size_x = 64) in;
 #include "include/compute_raster.glsl"
 
 uniform uint triangle_count;
+uniform uint run_stamp;  // differs from every earlier run's
 
 // A triangle is small when one invocation tests at most kSmallTriangleMaxPixels candidate centres
 // (its pixel box): the pixels a thread walks bound how long its warp waits, whatever the scene's
@@ -34,6 +35,9 @@ void main() {
   const uint triangle =
       (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
   if (triangle >= triangle_count) return;
+  // Round 1 redoes only the small triangles round 0 found nearest somewhere (most are culled or
+  // hidden): a triangle nearer than all others at a pixel was nearer than what it read there.
+  if (raster_round != 0u && touched[triangle] != run_stamp) return;
   vec4 p[3];
   fetch_triangle(triangle, p);
   if ((outcode(p[0]) & outcode(p[1]) & outcode(p[2])) != 0u) return;
@@ -76,11 +80,12 @@ void main() {
   const ivec2 step_c = ivec2(a.y - b.y, b.x - a.x) * kSubpixelOne;
   const int bias_a = fill_bias(b, c), bias_b = fill_bias(c, a), bias_c = fill_bias(a, b);
   const float inverse_area = 1.0 / float(area);
+  bool nearest = false;
   for (int y = box.y; y <= box.w; ++y) {
     int wa = row_a, wb = row_b, wc = row_c;
     for (int x = box.x; x <= box.z; ++x) {
       if (wa >= bias_a && wb >= bias_b && wc >= bias_c)
-        update_pixel(ivec2(x, y), interpolate_depth(z, float(wb), float(wc), inverse_area), triangle);
+        nearest = update_pixel(ivec2(x, y), interpolate_depth(z, float(wb), float(wc), inverse_area), triangle) || nearest;
       wa += step_a.x;
       wb += step_b.x;
       wc += step_c.x;
@@ -89,4 +94,5 @@ void main() {
     row_b += step_b.y;
     row_c += step_c.y;
   }
+  if (raster_round == 0u && nearest) touched[triangle] = run_stamp;
 }

@@ -83,13 +83,17 @@ float interpolate_depth(vec3 z, float weight_b, float weight_c, float inverse_ar
 
 // What a covered pixel does: round 0 keeps the nearest depth, round 1 the first triangle in draw
 // order among those at exactly the kept depth (the same arithmetic gives the same bits both times).
-void update_pixel(ivec2 pixel, float depth, uint triangle) {
-  if (!(depth >= 0.0 && depth < 1.0)) return;  // clipped by the near or far plane, or not nearer than the clear
+// Round 0 returns false when the triangle cannot be kept there: the pixel already holds a nearer
+// depth (a stale read is only larger, so false is always right).
+bool update_pixel(ivec2 pixel, float depth, uint triangle) {
+  if (!(depth >= 0.0 && depth < 1.0)) return false;  // clipped by the near or far plane, or not nearer than the clear
   const uint key = depth > 0.0 ? floatBitsToUint(depth) : 0u;  // -0 is 0
   const uint i = uint(pixel.y * viewport.x + pixel.x);
+  const uint kept = depth_keys[i];
   if (raster_round == 0u) {
-    if (key < depth_keys[i]) atomicMin(depth_keys[i], key);  // a stale read is only larger: safe to skip
-  } else if (depth_keys[i] == key) {
+    if (key < kept) atomicMin(depth_keys[i], key);
+  } else if (kept == key) {
     atomicMin(winners[i], triangle);
   }
+  return key <= kept;
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace glint::render {
@@ -23,6 +24,7 @@ constexpr GLuint kTileStartBinding = 15;
 constexpr GLuint kCounterBinding = 16;
 constexpr GLuint kInstanceFirstTriangleBinding = 17;
 constexpr GLuint kDeferredBinding = 18;
+constexpr GLuint kTouchedBinding = 19;
 
 // The twin of the GLSL Counters block; these values start every run.
 struct Counters {
@@ -107,6 +109,8 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
   instance_count_ = static_cast<std::uint32_t>(scene.instances().size());
   instance_first_triangle_ = create_buffer(std::span<const std::uint32_t>(first));
   deferred_ = create_buffer((triangle_count_ + 1) * sizeof(std::uint32_t), nullptr);
+  touched_ = create_buffer((triangle_count_ + 1) * sizeof(std::uint32_t), nullptr);
+  clear_to(touched_, 0u);
 
   for (ShaderProgram* program : {&large_program_, &scan_program_, &tile_program_})
     set_uint(*program, "large_capacity", capacity_);
@@ -137,6 +141,12 @@ void ComputeVisibilityPass::run() {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCounterBinding, counters_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeferredBinding, deferred_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTouchedBinding, touched_.id());
+  if (++run_stamp_ == 0) {  // after 2^32 runs: stamps of 0 are the cleared ones again
+    clear_to(touched_, 0u);
+    run_stamp_ = 1;
+  }
+  set_uint(triangle_program_, "run_stamp", run_stamp_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters_.id());
 
   // One invocation per triangle; more groups than one dimension takes wrap into y.
@@ -152,19 +162,20 @@ void ComputeVisibilityPass::run() {
   constexpr GLbitfield kStorageAndCommands = GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT;
   set_round(0);
   triangle_program_.use();
-  if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
+  { GlPassScope stage("triangles"); if (groups > 0) glDispatchCompute(groups_x, groups_y, 1); }
   glMemoryBarrier(kStorageAndCommands);
   large_program_.use();
-  glDispatchComputeIndirect(kDeferredDispatchOffset);
+  { GlPassScope stage("large"); glDispatchComputeIndirect(kDeferredDispatchOffset); }
   glMemoryBarrier(kStorageAndCommands);
   scan_program_.use();
-  glDispatchCompute(1, 1, 1);
+  { GlPassScope stage("scan"); glDispatchCompute(1, 1, 1); }
   glMemoryBarrier(kStorageAndCommands);
   tile_program_.use();
-  glDispatchComputeIndirect(kTileDispatchOffset);
+  { GlPassScope stage("tiles"); glDispatchComputeIndirect(kTileDispatchOffset); }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   // Round 1 over the same lists: the three dispatches only read the final depths and lower the
   // winners, so none waits for another.
+  std::optional<GlPassScope> round1(std::in_place, "round1");  // one scope: a stamp between would serialise them
   set_round(1);
   triangle_program_.use();
   if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
@@ -173,6 +184,7 @@ void ComputeVisibilityPass::run() {
   tile_program_.use();
   glDispatchComputeIndirect(kTileDispatchOffset);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  round1.reset();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
   // Ids and depth through the framebuffer the id draw would use: every pixel written, depth
@@ -186,7 +198,7 @@ void ComputeVisibilityPass::run() {
   glDisable(GL_BLEND);
   resolve_program_.use();
   glBindVertexArray(empty_vertex_array_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  { GlPassScope stage("resolve"); glDrawArrays(GL_TRIANGLES, 0, 3); }
   glBindVertexArray(0);
   glDepthFunc(GL_LESS);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

@@ -21,7 +21,8 @@
 //              the polygon, append the pieces to the large-triangle list (round 0)
 //   scan       one work group: each entry's 8x8-pixel tiles, prefix-summed, the tile dispatch's size
 //   tiles      one work group per (entry, tile), one invocation per pixel, 64-bit edge functions
-//   triangles, large and tiles again for round 1 over the same lists; then a full-screen draw
+//   triangles (only those round 0 found nearest somewhere), large and tiles again for round 1
+//   over the same lists; then a full-screen draw
 //   writes the id image and the depth (compute shaders cannot write a depth texture).
 // Coverage is exact (integer edge functions at pixel centres) with llvmpipe's fill rule, so
 // triangles sharing an edge leave no crack and cover no centre twice. When the large-triangle list
@@ -76,6 +77,8 @@ private:
   GlBuffer counters_;                       // ComputeVisibilityCounters (the .cpp), indirect dispatch inside
   GlBuffer instance_first_triangle_;        // instance_count_ + 1 uints
   GlBuffer deferred_;                       // triangle_count_ + 1 uints: room for every triangle
+  GlBuffer touched_;                        // triangle_count_ + 1 uints: run stamps
+  std::uint32_t run_stamp_ = 0;             // of the last run; touched_ starts at 0
   ShaderProgram triangle_program_, large_program_, scan_program_, tile_program_, resolve_program_;
   GlFramebuffer framebuffer_;
   GlVertexArray empty_vertex_array_;
