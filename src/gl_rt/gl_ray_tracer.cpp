@@ -20,8 +20,7 @@
 namespace glint::gl_rt {
 namespace {
 
-constexpr GLuint kWorkGroupSize = 64;          // local_size_x of both kernels
-constexpr std::uint64_t kMaxGroupsPerDispatch = 65535;  // GL's guaranteed minimum of GL_MAX_COMPUTE_WORK_GROUP_COUNT
+constexpr GLuint kWorkGroupSize = 64;  // local_size_x of both kernels
 
 double ms_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -76,10 +75,13 @@ GlRayTracer::Kernel GlRayTracer::make_kernel(const char* name) {
 }
 
 // The context is checked before the first member touches GL.
-GlRayTracer::GlRayTracer()
-    : closest_((require_gl45_context(), make_kernel("gl_rt_closest.comp.glsl"))),
+GlRayTracer::GlRayTracer(std::uint32_t max_groups_per_dispatch)
+    : max_groups_per_dispatch_(max_groups_per_dispatch),
+      closest_((require_gl45_context(), make_kernel("gl_rt_closest.comp.glsl"))),
       any_(make_kernel("gl_rt_any.comp.glsl")),
       flag_(make_flag_buffer()) {
+  if (max_groups_per_dispatch < 1 || max_groups_per_dispatch > kMaxGroupsPerDispatch)
+    fail("rt gl: {} work groups per dispatch; 1 to {} are guaranteed", max_groups_per_dispatch, kMaxGroupsPerDispatch);
   check_gl("rt gl: set-up");
 }
 
@@ -134,7 +136,7 @@ void GlRayTracer::dispatch(const Kernel& kernel, GLuint rays, GLuint results, GL
   glProgramUniform1ui(kernel.program.id(), kernel.ray_capacity, capacity);
   kernel.program.use();
   // Launched for the capacity: invocations at or past the count read on the GPU return at once.
-  const std::uint64_t rays_per_dispatch = kMaxGroupsPerDispatch * kWorkGroupSize;
+  const std::uint64_t rays_per_dispatch = std::uint64_t{max_groups_per_dispatch_} * kWorkGroupSize;
   for (std::uint64_t base = 0; base < capacity; base += rays_per_dispatch) {
     const std::uint64_t rays_here = std::min<std::uint64_t>(rays_per_dispatch, capacity - base);
     glProgramUniform1ui(kernel.program.id(), kernel.ray_base, static_cast<GLuint>(base));

@@ -33,9 +33,14 @@ namespace glint::gl_rt {
 
 class GlRayTracer final : public rt::RayTracer, public rt::GlTracing {
 public:
+  // GL guarantees at least this many work groups per dispatch; a longer ray list takes several.
+  static constexpr std::uint32_t kMaxGroupsPerDispatch = 65535;
+
   // Compiles the two kernels on the current context; glint::Error ("--backend gl needs an OpenGL
-  // 4.5 context: ...") when no OpenGL 4.5 context is current on this thread.
-  GlRayTracer();
+  // 4.5 context: ...") when no OpenGL 4.5 context is current on this thread. A trace dispatches at
+  // most `max_groups_per_dispatch` work groups of 64 rays at a time (tests lower it to split short
+  // lists too).
+  explicit GlRayTracer(std::uint32_t max_groups_per_dispatch = kMaxGroupsPerDispatch);
 
   void build(const Scene& scene, const rt::AccelOptions& options) override;
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
@@ -69,11 +74,13 @@ private:
   void require_built(const char* what) const;
   void set_tlas_node_count();
   // Binds the structures and the call's buffers and dispatches `kernel` over `capacity` rays (in
-  // pieces of at most 65535 work groups), then the barriers the results' readers need.
+  // pieces of at most max_groups_per_dispatch_ work groups), then the barriers the results' readers
+  // need.
   void dispatch(const Kernel& kernel, GLuint rays, GLuint results, GLuint ray_count, std::uint32_t capacity) const;
   // Host-side traces: uploads `rays`, dispatches, reads `result_bytes` per ray into `results`.
   void trace_host(const Kernel& kernel, std::span<const accel::Ray> rays, std::size_t result_bytes, void* results) const;
 
+  std::uint32_t max_groups_per_dispatch_;
   Kernel closest_;
   Kernel any_;
   GlBuffer flag_;  // one uint: a stack overflowed

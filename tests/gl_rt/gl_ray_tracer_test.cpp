@@ -187,6 +187,37 @@ TEST_F(GlRayTracerTest, GlSideTracesReadTheCountOnTheGpuAndLeaveLaterSlotsAlone)
   tracer.check_stack_overflow();  // nothing overflowed
 }
 
+// A list longer than one dispatch's work groups is traced in several dispatches (ray_base): the same
+// answers, host side and GL side (count below the capacity, in the last piece).
+TEST_F(GlRayTracerTest, ListsLongerThanOneDispatchAreTracedInPieces) {
+  const Scene scene = testing::make_instanced_scene();
+  const std::vector<accel::Ray> rays = testing::occlusion_test_rays(scene, 300, 15);
+  GlRayTracer whole;
+  GlRayTracer pieces(3);  // 192 rays per dispatch
+  whole.build(scene, {});
+  pieces.build(scene, {});
+  ASSERT_GT(rays.size(), 4u * 192u);
+  const std::vector<accel::Hit> hits = trace(whole, rays);
+  EXPECT_EQ(compare_hits(scene, rays, hits, trace(pieces, rays)), "");
+  EXPECT_EQ(compare_occluded(rays, trace_occluded(whole, rays), trace_occluded(pieces, rays)), "");
+
+  const auto capacity = static_cast<uint32_t>(rays.size());
+  const uint32_t count = capacity - 100;
+  const GlBuffer ray_buffer = buffer_of(rays);
+  const GlBuffer count_buffer = buffer_of(std::vector<uint32_t>{count});
+  const GlBuffer hit_buffer = buffer_of(std::vector<accel::Hit>(capacity));
+  pieces.trace_closest_gl(ray_buffer.id(), hit_buffer.id(), count_buffer.id(), capacity);
+  const std::vector<accel::Hit> gl_hits = read_back<accel::Hit>(hit_buffer, capacity);
+  size_t wrong = 0, written_past = 0;
+  for (uint32_t i = 0; i < capacity; ++i) {
+    if (i < count) wrong += gl_hits[i].prim != hits[i].prim || gl_hits[i].instance != hits[i].instance ? 1 : 0;
+    else written_past += gl_hits[i].valid() ? 1 : 0;
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_EQ(written_past, 0u);
+  EXPECT_NE(testing::error_of([] { GlRayTracer none(0); }).find("work groups per dispatch"), std::string::npos);
+}
+
 // Deforms, updates with `policy` and checks closest hits and occlusion against brute force on the
 // deformed geometry, on two frames (a second update on top of a refit too).
 void check_updates(Scene scene, const AccelOptions& options, UpdatePolicy policy, size_t ray_count) {
