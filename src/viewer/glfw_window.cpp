@@ -31,11 +31,19 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  // EGL first, as `glint render` uses (the gl backend asks EGL for the current context); the display
+  // system's native API (GLX) where EGL cannot make a window context.
+  glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (window_ == nullptr) {
-    const std::string reason = last_glfw_error();
-    glfwTerminate();
-    fail("view: the display gives no OpenGL 4.5 core context ({})", reason);
+    const std::string egl_reason = last_glfw_error();
+    glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_NATIVE_CONTEXT_API);
+    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (window_ == nullptr) {
+      const std::string native_reason = last_glfw_error();
+      glfwTerminate();
+      fail("view: the display gives no OpenGL 4.5 core context (EGL: {}; native: {})", egl_reason, native_reason);
+    }
   }
   glfwSetWindowUserPointer(window_, this);
   // Set before ImGui's backend installs its callbacks, which call this one after its own.

@@ -1,7 +1,8 @@
 #pragma once
-// The viewer's window: GLFW with an OpenGL 4.5 core context made current on this thread, which the
-// frame pipeline renders on exactly as on the headless EGL context of `glint render` (it needs only
-// a current 4.5 core context; its passes draw into their own framebuffers). Without a display (no
+// The viewer's window: GLFW with an OpenGL 4.5 core context (through EGL where it can, else GLX) made
+// current on this thread, which the frame pipeline renders on exactly as on the headless EGL context
+// of `glint render` (it needs only a current 4.5 core context; its passes draw into their own
+// framebuffers). Without a display (no
 // DISPLAY, an X server that cannot be reached) construction is one glint::Error saying so.
 #include <string>
 

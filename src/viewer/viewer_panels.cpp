@@ -8,6 +8,7 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
+#include <optional>
 #include <variant>
 
 namespace glint::viewer {
@@ -73,7 +74,12 @@ void settings_panel(const PanelContext& context, ViewerState& state) {
   ImGui::Begin("Settings");
   ImGui::PushItemWidth(kControlWidth);
   ImGui::TextUnformatted(context.renderer.c_str());
-  ImGui::SliderFloat("resolution scale", &state.scale, 0.25f, 2.0f, "%.2f");
+  // Every new scale rebuilds the loop, so a drag applies once, when the slider is let go.
+  static std::optional<float> dragged_scale;
+  float scale = dragged_scale.value_or(state.scale);
+  ImGui::SliderFloat("resolution scale", &scale, 0.25f, 2.0f, "%.2f");
+  if (ImGui::IsItemDeactivatedAfterEdit()) state.scale = scale;
+  dragged_scale = ImGui::IsItemActive() ? std::optional<float>(scale) : std::nullopt;
   ImGui::Checkbox("render continuously", &state.continuous);
   for (const ViewerSetting& setting : viewer_settings()) {
     const std::string label(setting.name);
