@@ -35,7 +35,7 @@ float clip_distance(vec4 p, int plane) {
 // Where an edge crosses a plane, always computed from its inside end: the two triangles sharing
 // the edge get the same point, so their pieces still meet.
 vec4 edge_crossing(vec4 inside, float d_inside, vec4 outside, float d_outside) {
-  precise const vec4 p = mix(inside, outside, d_inside / (d_inside - d_outside));
+  precise vec4 p = mix(inside, outside, d_inside / (d_inside - d_outside));
   return p;
 }
 

@@ -50,12 +50,12 @@ bool needs_clipping(vec4 p) { return p.z < -p.w || abs(p.x) > kGuardBand * p.w |
 
 ivec2 snap_to_window(vec4 clip) {
   const vec2 half_size = 0.5 * vec2(viewport.xy);
-  precise const vec2 window = clip.xy * (1.0 / clip.w) * half_size + half_size;
+  precise vec2 window = clip.xy * (1.0 / clip.w) * half_size + half_size;
   return ivec2(floor(window * float(kSubpixelOne) + 0.5));
 }
 
 float window_depth(vec4 clip) {
-  precise const float z = clip.z * (1.0 / clip.w) * 0.5 + 0.5;
+  precise float z = clip.z * (1.0 / clip.w) * 0.5 + 0.5;
   return z;
 }
 
@@ -77,7 +77,7 @@ int fill_bias(ivec2 u, ivec2 v) {
 
 // Window depth from the edge values of corners b and c (barycentric weight x area).
 float interpolate_depth(vec3 z, float weight_b, float weight_c, float inverse_area) {
-  precise const float depth = z.x + (weight_b * inverse_area) * (z.y - z.x) + (weight_c * inverse_area) * (z.z - z.x);
+  precise float depth = z.x + (weight_b * inverse_area) * (z.y - z.x) + (weight_c * inverse_area) * (z.z - z.x);
   return depth;
 }
 
