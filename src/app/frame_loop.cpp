@@ -52,6 +52,7 @@ FrameLoop::FrameLoop(Scene& scene, const render::FramePipelineSettings& settings
       keep_in_flight_(std::min(options.keep_in_flight, kFramesInFlight - 1)) {
   if (deformers_ && options.deform_on_gpu) gpu_deformer_ = render::make_gpu_deformer(*deformers_, pipeline_);
   pipeline_.set_final_capture(options.capture_final);
+  if (options.profile_scopes) profiler_.emplace(pass_timing);
 }
 
 FrameLoop::~FrameLoop() {
@@ -98,8 +99,10 @@ std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
 
   InFlight submitted{frame, submitted_++, {}, nullptr};
   timer_.begin_frame();  // the frame's latency starts here, before the deformation
+  if (profiler_) profiler_->begin_frame();
   submitted.deform = deform(frame);
   pipeline_.render(animation_.at(frame), &timer_);
+  if (profiler_) profiler_->end_frame();
   timer_.end_frame();
   submitted.done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   if (submitted.done == nullptr) fail("frame {}: glFenceSync failed", frame);
@@ -153,6 +156,7 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
     for (const PassTime& pass : measured.times.passes)
       if (pass.name == "trace") measured.ray_stats->trace_ms = pass.milliseconds;
   measured.final_image = std::move(readback->final_image);
+  if (profiler_) measured.scopes = std::move(profiler_->take_frame(oldest.index, /*wait=*/true)->scopes);
   measured.resident_bytes = resident_memory_bytes();
   measured.gpu_memory_used_bytes = gpu_memory_used_bytes();
   glDeleteSync(oldest.done);

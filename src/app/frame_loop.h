@@ -17,6 +17,7 @@
 //   for (FrameMeasurement& done : loop.drain()) record(done);
 #include "core/image.h"
 #include "gl/gpu_timer.h"
+#include "gl/scope_profiler.h"
 #include "render/frame_pipeline.h"
 #include "render/ray_traced_reflections.h"
 #include "render/ssr_pass.h"
@@ -58,6 +59,9 @@ struct FrameMeasurement {
   std::optional<std::uint64_t> resident_bytes;
   std::optional<std::uint64_t> gpu_memory_used_bytes;
   std::optional<ImageRgba8> final_image;  // with FrameLoopOptions::capture_final
+  // With FrameLoopOptions::profile_scopes: the GPU time of every pass and GlPassScope, nested, in
+  // tree order (gl/scope_profiler.h); empty otherwise.
+  std::vector<ScopeTime> scopes;
 };
 
 struct FrameLoopOptions {
@@ -76,6 +80,8 @@ struct FrameLoopOptions {
   // kFramesInFlight - 1), as when the GPU runs that far behind: tests use it to read every frame's
   // results frames late on any machine. drain() still returns everything.
   std::size_t keep_in_flight = 0;
+  // Time every GlPassScope of each frame, nested (FrameMeasurement::scopes; gl/scope_profiler.h).
+  bool profile_scopes = false;
 };
 
 class FrameLoop {
@@ -133,6 +139,7 @@ private:
   render::FramePipeline pipeline_;
   std::unique_ptr<cuda::GpuSceneDeformer> gpu_deformer_;
   GpuTimer timer_;
+  std::optional<ScopeProfiler> profiler_;  // with FrameLoopOptions::profile_scopes
   bool serialized_ = false;
   std::size_t keep_in_flight_ = 0;
   std::deque<InFlight> in_flight_;

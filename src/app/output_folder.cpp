@@ -50,7 +50,7 @@ void require_writable(const std::filesystem::path& folder) {
 }  // namespace
 
 bool is_run_output_name(std::string_view name) {
-  if (name == "run.json" || name == "timings.csv" || name == "walkthrough.mp4") return true;
+  if (name == "run.json" || name == "timings.csv" || name == "scopes.csv" || name == "walkthrough.mp4") return true;
   if (name.starts_with("frame_") && name.ends_with(".png")) return true;
   return name.starts_with('.') && name.find(".tmp-") != std::string_view::npos;
 }

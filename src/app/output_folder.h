@@ -47,7 +47,7 @@ private:
   bool created_ = false;
 };
 
-// Whether `name` is one of the files a run writes (run.json, timings.csv, walkthrough.mp4, frame_*.png)
+// Whether `name` is one of the files a run writes (run.json, timings.csv, scopes.csv, walkthrough.mp4, frame_*.png)
 // or a temporary left by one (".<name>.tmp-<pid>-<n>", see core/atomic_file.h).
 bool is_run_output_name(std::string_view name);
 

@@ -217,8 +217,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                       "--overwrite")
       ->capture_default_str();
   command->add_flag("--overwrite", options.overwrite,
-                    "Replace the earlier run in --out: its frames, debug views, timings.csv, run.json and video are "
-                    "removed first (other files are kept)");
+                    "Replace the earlier run in --out: its frames, debug views, timings.csv, scopes.csv, run.json and "
+                    "video are removed first (other files are kept)");
   command->add_flag("--debug-views", options.debug_views,
                     "Also write albedo, normals, positions, depth, shadow mask, SSR reflection and failure mask per frame");
   command->add_flag("--video", options.video, "Also encode DIR/walkthrough.mp4 with ffmpeg (must be on PATH)");
@@ -227,6 +227,10 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                     "PNG encoding in between, so the GPU stays busy (for measurements)")
       ->excludes("--video")
       ->excludes("--debug-views");
+  command->add_flag("--profile-scopes", options.profile_scopes,
+                    "Also write scopes.csv: per frame, the GPU time of every pass and of the scopes nested in it "
+                    "(frame, scope path such as gbuffer/compute_visibility/tiles, depth, ms); works with "
+                    "--timings-only (docs/render-command.md)");
   command->add_option("--deform", options.deform, "Animate the deformable meshes: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
@@ -334,12 +338,16 @@ int run_render_command(const RenderOptions& options) {
   loop_options.capture_final = images;  // read back frames later through pixel-pack buffers, no stall
   // Debug views are read from the pipeline's images, which must still hold the frame.
   loop_options.serialized = options.debug_views;
+  loop_options.profile_scopes = options.profile_scopes;
   FrameLoop loop(scene, settings, loop_options, pass_timing_for_renderer(context.renderer()));
   render::FramePipeline& pipeline = loop.pipeline();
 
   RenderRunRecord record(recorded, scene, context, loop.pass_timing(), frames);
   if (pipeline.ray_tracer() != nullptr) record.set_ray_tracer(settings.ray_tracing, pipeline.ray_tracer()->stats());
   CsvWriter timings(out.path() / "timings.csv", RenderRunRecord::timings_header());
+  std::optional<CsvWriter> scopes;
+  if (options.profile_scopes)
+    scopes.emplace(out.path() / "scopes.csv", std::vector<std::string>{"frame", "scope", "depth", "ms"});
   std::optional<FfmpegVideoWriter> video;
   if (options.video)
     video.emplace(out.path() / "walkthrough.mp4", options.width, options.height, scene.walkthrough.frames_per_second);
@@ -359,6 +367,9 @@ int run_render_command(const RenderOptions& options) {
       for (render::DebugView& view : pipeline.read_debug_views())
         png_writer->write(out.debug_view_path(measured.frame, view.name), std::move(view.image));
     timings.add_row(record.add_frame(measured));
+    if (scopes)
+      for (const ScopeTime& scope : measured.scopes)
+        scopes->add_row({measured.frame, scope.path, scope.depth, scope.milliseconds});
     progress.tick();
   };
   // Ctrl-C or SIGTERM: no new frame is started; the frames in flight are finished and written, then
@@ -373,6 +384,7 @@ int run_render_command(const RenderOptions& options) {
   progress.finish();
   if (video) video->finish();
   timings.commit();
+  if (scopes) scopes->commit();
   std::optional<rt::RayTracerStats> tracer_stats;
   if (pipeline.ray_tracer() != nullptr) tracer_stats = pipeline.ray_tracer()->stats();
   if (interruption_requested()) record.mark_interrupted(interruption_signal_name());

@@ -33,6 +33,7 @@ struct RenderOptions {
   bool debug_views = false;
   bool video = false;
   bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)
+  bool profile_scopes = false;    // also scopes.csv: every pass's nested scopes' GPU times per frame
   std::string deform = "on";      // on|off: animate the deformable meshes
   std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda or optix, cpu otherwise
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.

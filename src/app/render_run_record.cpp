@@ -51,6 +51,7 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"debug_views", options.debug_views},
           {"video", options.video},
           {"timings_only", options.timings_only},
+          {"profile_scopes", options.profile_scopes},
           {"blur_radius", options.blur_radius},
           {"exposure", options.exposure},
           {"tone_map", options.tone_map},

@@ -1,5 +1,7 @@
 #include "gl/gl_pass_scope.h"
 
+#include "gl/scope_profiler.h"
+
 #include <utility>
 
 namespace glint {
@@ -11,9 +13,14 @@ thread_local std::string t_current_pass;
 }  // namespace
 
 GlPassScope::GlPassScope(std::string_view pass_name)
-    : previous_(std::exchange(t_current_pass, std::string(pass_name))) {}
+    : previous_(std::exchange(t_current_pass, std::string(pass_name))), profiler_(ScopeProfiler::active()) {
+  if (profiler_ != nullptr) profiler_->begin_scope(pass_name);
+}
 
-GlPassScope::~GlPassScope() { t_current_pass = std::move(previous_); }
+GlPassScope::~GlPassScope() {
+  if (profiler_ != nullptr) profiler_->end_scope();
+  t_current_pass = std::move(previous_);
+}
 
 std::string_view current_gl_pass() {
   return t_current_pass.empty() ? std::string_view("(no pass)") : std::string_view(t_current_pass);

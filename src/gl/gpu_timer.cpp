@@ -1,6 +1,7 @@
 #include "gl/gpu_timer.h"
 
 #include "core/error.h"
+#include "gl/scope_profiler.h"
 
 #include <algorithm>
 #include <limits>
@@ -56,6 +57,8 @@ void GpuTimer::begin_frame() {
 void GpuTimer::begin_pass(std::string_view name) {
   if (!in_frame_) fail("GpuTimer: pass '{}' begun outside begin_frame()/end_frame()", name);
   if (in_pass_) fail("GpuTimer: pass '{}' begun inside pass '{}'; GL time queries cannot nest", name, current().names.back());
+  // A pass is also the outermost scope of what it runs, when scopes are profiled.
+  if (ScopeProfiler* profiler = ScopeProfiler::active()) profiler->begin_scope(name);
   QuerySet& set = current();
   set.names.emplace_back(name);
   in_pass_ = true;
@@ -75,9 +78,10 @@ void GpuTimer::end_pass() {
     glFinish();
     const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - pass_start_;
     wall_clock_frame_.passes.push_back({current().names.back(), elapsed.count()});
-    return;
+  } else {
+    glEndQuery(GL_TIME_ELAPSED);
   }
-  glEndQuery(GL_TIME_ELAPSED);
+  if (ScopeProfiler* profiler = ScopeProfiler::active()) profiler->end_scope();
 }
 
 void GpuTimer::end_frame() {

@@ -38,9 +38,9 @@ void HitShadowRays::run(RayHitBuffers& buffers, const GpuScene& scene, GLuint fr
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants);
   program_.set_uniform("max_rays", static_cast<int>(max_rays));
   program_.use();
-  glDispatchCompute(work_groups(max_rays, kWorkGroupSize), 1, 1);
+  { GlPassScope stage("ray_generation"); glDispatchCompute(work_groups(max_rays, kWorkGroupSize), 1, 1); }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  buffers_.trace(max_rays);
+  { GlPassScope stage("trace"); buffers_.trace(max_rays); }
   check_gl("reflection shadow rays");
 }
 

@@ -33,14 +33,14 @@ void PrimaryRayPass::run() {
   const RasterTargets& t = *targets_;
   buffers_.bind();
   ray_program_.use();
-  dispatch_over_image(t.width, t.height);
+  { GlPassScope stage("ray_generation"); dispatch_over_image(t.width, t.height); }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  buffers_.trace(buffers_.capacity());  // dense: every pixel has a ray
+  { GlPassScope stage("trace"); buffers_.trace(buffers_.capacity()); }  // dense: every pixel has a ray
 
   glBindImageTexture(kIdUnit, t.visibility_id.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kVisibilityIdFormat);
   id_program_.use();
-  dispatch_over_image(t.width, t.height);
+  { GlPassScope stage("ids"); dispatch_over_image(t.width, t.height); }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   check_gl("primary rays");
 }

@@ -1,6 +1,7 @@
 #include "render/ray_traced_reflections.h"
 
 #include "core/error.h"
+#include "gl/gl_pass_scope.h"
 #include "rt/instance_subset_tracer.h"
 
 #include <chrono>
@@ -86,7 +87,7 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
                             static_cast<std::uint32_t>(buffers_.capacity()));
     });
   } else {
-    trace(host_counts, slot, raster.frame_constants().light_position_range);
+    { GlPassScope scope("trace"); trace(host_counts, slot, raster.frame_constants().light_position_range); }
   }
   const auto max_rays = static_cast<std::uint32_t>(on_host ? host_counts.rays : buffers_.capacity());
   run_timed_pass(timer, "hit_shade", [&] {

@@ -58,14 +58,14 @@ void RayTracedShadows::run(const RasterPipeline& raster) {
                      kWorldNormalRoughnessFormat);
   glBindImageTexture(kMaskUnit, raster.shadow_mask(), 0, GL_FALSE, 0, GL_READ_ONLY, kShadowMaskFormat);
   ray_program_.use();
-  dispatch_over_image(width_, height_);
+  { GlPassScope stage("ray_generation"); dispatch_over_image(width_, height_); }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  buffers_.trace(buffers_.capacity());  // dense: every pixel has a ray, empty or not
+  { GlPassScope stage("trace"); buffers_.trace(buffers_.capacity()); }  // dense: every pixel has a ray, empty or not
 
   glBindImageTexture(kMaskUnit, raster.shadow_mask(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kShadowMaskFormat);
   mask_program_.use();
-  dispatch_over_image(width_, height_);
+  { GlPassScope stage("mask"); dispatch_over_image(width_, height_); }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   check_gl("shadow rays");
 }
