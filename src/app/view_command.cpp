@@ -22,7 +22,8 @@ void add_view_command(CLI::App& app, ViewOptions& options) {
   command->add_option("--frame", options.frame, "Walkthrough frame shown first")->check(CLI::NonNegativeNumber);
   command->add_option("--set", options.settings,
                       "A starting setting NAME=VALUE, as the script's `set NAME VALUE` (repeatable), e.g. "
-                      "--set reflections=rt --set backend=embree");
+                      "--set reflections=rt --set backend=embree")
+      ->allow_extra_args(false);  // one NAME=VALUE per --set, so a scene after it stays the scene
   command->add_option("--script", options.script,
                       "Run the commands of FILE (set, frame, play, pause, camera, path, wait, screenshot, record, "
                       "reload, quit; docs/viewer.md)");

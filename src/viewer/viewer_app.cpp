@@ -38,7 +38,9 @@ public:
         session_(launch.options, pass_timing_for_renderer(window_.renderer())),
         script_path_(launch.script) {
     state_.options = launch.options;
-    state_.frame = std::clamp(launch.frame, 0, session_.frame_count() - 1);
+    if (launch.frame >= session_.frame_count())
+      fail("--frame {} is past the walkthrough's last frame, {}", launch.frame, session_.frame_count() - 1);
+    state_.frame = launch.frame;
     // On a software renderer a frame takes long: render when something changes only.
     state_.continuous = pass_timing_for_renderer(window_.renderer()) == PassTimingMethod::gpu_queries;
     if (!launch.script.empty()) script_ = load_viewer_script(launch.script, session_.frame_count(), launch.options);
