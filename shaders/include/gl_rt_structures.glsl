@@ -8,7 +8,7 @@
 
 // accel::BvhNode (32 bytes): interior (prim_count == 0): `first` is the left child, the right one
 // follows it; leaf: prim_count entries of the primitive indices from `first`. Indices are local to
-// the node's own BVH: the walk adds its region's offsets.
+// the node's own BVH: the walk adds its region's offsets. std430 reads the C++ struct as this one.
 struct BvhNode {
   vec3 bounds_min;
   uint first;
@@ -20,13 +20,15 @@ struct BvhNode {
 // and its mesh's triangles live.
 struct TracerInstance {
   mat4 world_to_object;
-  uint node_offset;      // the BLAS's root in bvh_nodes
+  uint node_offset;      // the BLAS's root in the node array
   uint prim_offset;      // its first entry of bvh_prims
   uint triangle_offset;  // the mesh's first triangle in mesh_triangles
   uint node_count;       // 0: an empty BLAS, never hit
 };
 
-layout(std430, binding = 20) readonly restrict buffer TracerNodes { BvhNode bvh_nodes[]; };
+// Read as two uvec4 per node (load_node), so every node is two 16-byte loads whatever the compiler
+// makes of a struct; the bounds' bits are floats.
+layout(std430, binding = 20) readonly restrict buffer TracerNodes { uvec4 bvh_node_halves[]; };
 layout(std430, binding = 21) readonly restrict buffer TracerPrims { uint bvh_prims[]; };
 // Object-space positions (w unused) of every mesh, one after the other.
 layout(std430, binding = 22) readonly restrict buffer TracerVertices { vec4 mesh_vertices[]; };
@@ -34,8 +36,14 @@ layout(std430, binding = 22) readonly restrict buffer TracerVertices { vec4 mesh
 layout(std430, binding = 23) readonly restrict buffer TracerTriangles { uvec4 mesh_triangles[]; };
 layout(std430, binding = 24) readonly restrict buffer TracerInstances { TracerInstance tracer_instances[]; };
 
+BvhNode load_node(uint index) {
+  const uvec4 low = bvh_node_halves[2u * index];
+  const uvec4 high = bvh_node_halves[2u * index + 1u];
+  return BvhNode(uintBitsToFloat(low.xyz), low.w, uintBitsToFloat(high.xyz), high.w);
+}
+
 // Set to 1 by a walk whose stack would overflow (gl_rt_traverse.glsl); the host reads and clears it.
 layout(std430, binding = 28) buffer TracerFlags { uint tracer_stack_overflow; };
 
-// The TLAS is the region at the start of bvh_nodes and bvh_prims; 0 nodes: every ray misses.
+// The TLAS is the region at the start of the node array and bvh_prims; 0 nodes: every ray misses.
 uniform uint tlas_node_count;

@@ -65,8 +65,8 @@ bool intersect_box(BoxRay ray, BvhNode node, float t_min, float t_max, out float
 uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, float t_max, out BvhNode next,
                     out uint far_index, out float far_entry) {
   const uint left_index = node_offset + node.first;
-  const BvhNode left = bvh_nodes[left_index];
-  const BvhNode right = bvh_nodes[left_index + 1u];
+  const BvhNode left = load_node(left_index);
+  const BvhNode right = load_node(left_index + 1u);
   float t_left, t_right;
   const bool hit_left = intersect_box(ray, left, t_min, t_max, t_left);
   const bool hit_right = intersect_box(ray, right, t_min, t_max, t_right);
@@ -89,7 +89,7 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
                inout Hit hit) {
   if (instance.node_count == 0u) return false;
   const BoxRay box_ray = make_box_ray(origin, direction);
-  BvhNode node = bvh_nodes[instance.node_offset];
+  BvhNode node = load_node(instance.node_offset);
   float t_entry;
   if (!intersect_box(box_ray, node, t_min, t_max, t_entry)) return false;
   const WatertightRay ray = make_watertight_ray(origin, direction);
@@ -140,12 +140,12 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
       --stack_size;
       if (blas_stack_entry[stack_size] <= t_max * kSlabFarScale) break;
     }
-    node = bvh_nodes[blas_stack_node[stack_size]];
+    node = load_node(blas_stack_node[stack_size]);
   }
   return found;
 }
 
-// Both levels for one world ray: the TLAS over instances (the region at the start of bvh_nodes and
+// Both levels for one world ray: the TLAS over instances (the region at the start of the node array and
 // bvh_prims), each instance entered with the ray in its object space (accel::to_object_space: glm's
 // mat4 x vec4 as (c0 x + c1 y) + (c2 z + c3 w), so t is the same in both spaces). Closest hit: `hit`
 // in RayTracer's convention (Hit{t = inf, instance = prim = kInvalidIndex} for a miss). Any hit:
@@ -155,7 +155,7 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
   if (tlas_node_count == 0u) return false;
   float t_max = ray_t_max;
   const BoxRay box_ray = make_box_ray(origin, direction);
-  BvhNode node = bvh_nodes[0];
+  BvhNode node = load_node(0u);
   float t_entry;
   if (!intersect_box(box_ray, node, t_min, t_max, t_entry)) return false;
   uint stack_size = 0u;
@@ -199,7 +199,7 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
       --stack_size;
       if (tlas_stack_entry[stack_size] <= t_max * kSlabFarScale) break;
     }
-    node = bvh_nodes[tlas_stack_node[stack_size]];
+    node = load_node(tlas_stack_node[stack_size]);
   }
   return found;
 }
