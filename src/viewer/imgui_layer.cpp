@@ -52,8 +52,9 @@ void ImGuiLayer::begin_frame() {
 }
 
 void ImGuiLayer::end_frame(float side_margin) {
-  const float width = static_cast<float>(window_->framebuffer_width());
-  const float height = static_cast<float>(window_->framebuffer_height());
+  // ImGui draws in window coordinates (DisplaySize), which are not pixels on a high-DPI screen.
+  const float width = ImGui::GetIO().DisplaySize.x;
+  const float height = ImGui::GetIO().DisplaySize.y;
   const float area = width - 2.0f * side_margin;
   if (texture_ != 0 && area > 0.0f && height > 0.0f) {
     const float scale = std::min(area / static_cast<float>(texture_width_), height / static_cast<float>(texture_height_));
@@ -64,7 +65,7 @@ void ImGuiLayer::end_frame(float side_margin) {
   }
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, static_cast<GLsizei>(width), static_cast<GLsizei>(height));
+  glViewport(0, 0, window_->framebuffer_width(), window_->framebuffer_height());
   glDisable(GL_FRAMEBUFFER_SRGB);  // the picture is sRGB-encoded already
   glClearColor(0.08f, 0.08f, 0.08f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
