@@ -99,8 +99,8 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
     if (node.prim_count != 0u) {
       const uint end = node.first + node.prim_count;
       for (uint slot = node.first; slot != end; ++slot) {
-        const uint prim = bvh_prims[instance.prim_offset + slot];
-        const uvec4 corners = mesh_triangles[instance.triangle_offset + prim];
+        const uvec4 corners = leaf_triangles[instance.slot_offset + slot];
+        const uint prim = corners.w;
         float t, u, v;
         if (!intersect_triangle(ray, mesh_vertices[corners.x].xyz, mesh_vertices[corners.y].xyz,
                                 mesh_vertices[corners.z].xyz, t_min, t_max, t, u, v))
@@ -145,8 +145,8 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
   return found;
 }
 
-// Both levels for one world ray: the TLAS over instances (the region at the start of the node array and
-// bvh_prims), each instance entered with the ray in its object space (accel::to_object_space: glm's
+// Both levels for one world ray: the TLAS over instances (the region at the start of the node array,
+// its leaves in tlas_refs), each instance entered with the ray in its object space (accel::to_object_space: glm's
 // mat4 x vec4 as (c0 x + c1 y) + (c2 z + c3 w), so t is the same in both spaces). Closest hit: `hit`
 // in RayTracer's convention (Hit{t = inf, instance = prim = kInvalidIndex} for a miss). Any hit:
 // returns whether anything lies within [t_min, t_max].
@@ -164,7 +164,7 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
     if (node.prim_count != 0u) {
       const uint end = node.first + node.prim_count;
       for (uint slot = node.first; slot != end; ++slot) {
-        const uint index = bvh_prims[slot];
+        const uint index = tlas_refs[slot];
         const TracerInstance instance = tracer_instances[index];
         const mat4 m = instance.world_to_object;
         precise vec3 local_origin = (m[0].xyz * origin.x + m[1].xyz * origin.y) + (m[2].xyz * origin.z + m[3].xyz);

@@ -39,61 +39,66 @@ void write(const GlBuffer& buffer, size_t first, std::span<const T> data) {
 
 bool GlStructureBuffers::fits(const MeshBlases& meshes, uint32_t mesh) const {
   const accel::Bvh& bvh = meshes.meshes()[mesh].bvh;
-  return bvh.nodes.size() <= regions_[mesh].node_capacity && bvh.prim_indices.size() <= regions_[mesh].prim_capacity;
+  return bvh.nodes.size() <= regions_[mesh].node_capacity && bvh.prim_indices.size() <= regions_[mesh].slot_capacity;
+}
+
+void GlStructureBuffers::gather_leaf_triangles(const MeshBlases& meshes, uint32_t mesh,
+                                               std::vector<glm::uvec4>& out) const {
+  const MeshBlases::Mesh& source = meshes.meshes()[mesh];
+  const uint32_t base = vertex_offsets_[mesh];
+  out.clear();
+  out.reserve(source.bvh.prim_indices.size());
+  for (const uint32_t prim : source.bvh.prim_indices) {
+    const uint32_t* corner = &source.indices[3 * static_cast<size_t>(prim)];
+    out.emplace_back(base + corner[0], base + corner[1], base + corner[2], prim);
+  }
 }
 
 void GlStructureBuffers::upload_all(const MeshBlases& meshes, const accel::Tlas& tlas) {
   const std::vector<MeshBlases::Mesh>& all = meshes.meshes();
   const size_t instance_count = tlas.instances.size();
   tlas_node_capacity_ = std::max(checked_u32(tlas.bvh.nodes.size(), "TLAS nodes"), node_room(instance_count));
-  tlas_prim_capacity_ = std::max(checked_u32(tlas.bvh.prim_indices.size(), "TLAS references"),
-                                 checked_u32(instance_count, "instances"));
+  tlas_ref_capacity_ = std::max(checked_u32(tlas.bvh.prim_indices.size(), "TLAS references"),
+                                checked_u32(instance_count, "instances"));
   regions_.assign(all.size(), {});
   vertex_offsets_.assign(all.size(), 0);
-  triangle_offsets_.assign(all.size(), 0);
-  size_t nodes = tlas_node_capacity_, prims = tlas_prim_capacity_, vertices = 0, triangles = 0;
+  size_t nodes = tlas_node_capacity_, slots = 0, vertices = 0;
   for (size_t m = 0; m < all.size(); ++m) {
     const size_t triangle_count = all[m].indices.size() / 3;
     BlasRegion& region = regions_[m];
     region.node_offset = checked_u32(nodes, "BVH nodes");
     region.node_capacity = std::max(checked_u32(all[m].bvh.nodes.size(), "BVH nodes"), node_room(triangle_count));
-    region.prim_offset = checked_u32(prims, "BVH references");
-    region.prim_capacity =
+    region.slot_offset = checked_u32(slots, "BVH references");
+    region.slot_capacity =
         std::max(checked_u32(all[m].bvh.prim_indices.size(), "BVH references"), checked_u32(triangle_count, "triangles"));
     vertex_offsets_[m] = checked_u32(vertices, "vertices");
-    triangle_offsets_[m] = checked_u32(triangles, "triangles");
     nodes += region.node_capacity;
-    prims += region.prim_capacity;
+    slots += region.slot_capacity;
     vertices += all[m].positions.size();
-    triangles += triangle_count;
   }
   (void)checked_u32(nodes, "BVH nodes");
-  (void)checked_u32(prims, "BVH references");
+  (void)checked_u32(slots, "BVH references");
   (void)checked_u32(vertices, "vertices");
-  (void)checked_u32(triangles, "triangles");
 
   std::vector<accel::BvhNode> node_data(nodes);
-  std::vector<uint32_t> prim_data(prims, 0);
+  std::vector<glm::uvec4> leaf_data(slots, glm::uvec4(0u));
   std::vector<vec4> vertex_data;
   vertex_data.reserve(vertices);
-  std::vector<glm::uvec4> triangle_data;
-  triangle_data.reserve(triangles);
-  for (size_t m = 0; m < all.size(); ++m) {
+  for (uint32_t m = 0; m < all.size(); ++m) {
     const MeshBlases::Mesh& mesh = all[m];
     std::copy(mesh.bvh.nodes.begin(), mesh.bvh.nodes.end(), node_data.begin() + regions_[m].node_offset);
-    std::copy(mesh.bvh.prim_indices.begin(), mesh.bvh.prim_indices.end(), prim_data.begin() + regions_[m].prim_offset);
+    gather_leaf_triangles(meshes, m, leaf_scratch_);
+    std::copy(leaf_scratch_.begin(), leaf_scratch_.end(), leaf_data.begin() + regions_[m].slot_offset);
     for (const vec3& p : mesh.positions) vertex_data.emplace_back(p, 1.0f);
-    const uint32_t base = vertex_offsets_[m];
-    for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3)
-      triangle_data.emplace_back(base + mesh.indices[i], base + mesh.indices[i + 1], base + mesh.indices[i + 2], 0u);
   }
   nodes_ = make_storage(node_data);
-  prims_ = make_storage(prim_data);
+  tlas_refs_ = make_storage(std::vector<uint32_t>(tlas_ref_capacity_, 0u));
   vertices_ = make_storage(vertex_data);
-  triangles_ = make_storage(triangle_data);
+  leaf_triangles_ = make_storage(leaf_data);
   instances_ = make_storage(std::vector<GlInstanceRecord>(instance_count));
-  bytes_ = std::max<size_t>(nodes, 1) * sizeof(accel::BvhNode) + std::max<size_t>(prims, 1) * sizeof(uint32_t) +
-           std::max<size_t>(vertices, 1) * sizeof(vec4) + std::max<size_t>(triangles, 1) * sizeof(glm::uvec4) +
+  bytes_ = std::max<size_t>(nodes, 1) * sizeof(accel::BvhNode) +
+           std::max<size_t>(tlas_ref_capacity_, 1) * sizeof(uint32_t) + std::max<size_t>(vertices, 1) * sizeof(vec4) +
+           std::max<size_t>(slots, 1) * sizeof(glm::uvec4) +
            std::max<size_t>(instance_count, 1) * sizeof(GlInstanceRecord);
   upload_tlas_and_instances(meshes, tlas);
   check_gl("rt gl: uploading the structures");
@@ -114,10 +119,11 @@ void GlStructureBuffers::upload_update(const MeshBlases& meshes, std::span<const
     for (const vec3& p : mesh.positions) vertex_scratch_.emplace_back(p, 1.0f);
     write(vertices_, vertex_offsets_[m], std::span<const vec4>(vertex_scratch_));
     write(nodes_, regions_[m].node_offset, std::span<const accel::BvhNode>(mesh.bvh.nodes.data(), mesh.bvh.nodes.size()));
-    // A refit keeps the primitive order.
-    if (rebuilt[i])
-      write(prims_, regions_[m].prim_offset,
-            std::span<const uint32_t>(mesh.bvh.prim_indices.data(), mesh.bvh.prim_indices.size()));
+    // A refit keeps the primitive order, so the leaf slots only change with a rebuild.
+    if (rebuilt[i]) {
+      gather_leaf_triangles(meshes, m, leaf_scratch_);
+      write(leaf_triangles_, regions_[m].slot_offset, std::span<const glm::uvec4>(leaf_scratch_));
+    }
   }
   upload_tlas_and_instances(meshes, tlas);
   check_gl("rt gl: uploading the updated structures");
@@ -125,11 +131,11 @@ void GlStructureBuffers::upload_update(const MeshBlases& meshes, std::span<const
 
 void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, const accel::Tlas& tlas) {
   // The TLAS over n instances has at most 2 n - 1 nodes and n references (no splits): always fits.
-  if (tlas.bvh.nodes.size() > tlas_node_capacity_ || tlas.bvh.prim_indices.size() > tlas_prim_capacity_)
+  if (tlas.bvh.nodes.size() > tlas_node_capacity_ || tlas.bvh.prim_indices.size() > tlas_ref_capacity_)
     fail("rt gl: the TLAS ({} nodes, {} references) outgrew its region ({}, {})", tlas.bvh.nodes.size(),
-         tlas.bvh.prim_indices.size(), tlas_node_capacity_, tlas_prim_capacity_);
+         tlas.bvh.prim_indices.size(), tlas_node_capacity_, tlas_ref_capacity_);
   write(nodes_, 0, std::span<const accel::BvhNode>(tlas.bvh.nodes.data(), tlas.bvh.nodes.size()));
-  write(prims_, 0, std::span<const uint32_t>(tlas.bvh.prim_indices.data(), tlas.bvh.prim_indices.size()));
+  write(tlas_refs_, 0, std::span<const uint32_t>(tlas.bvh.prim_indices.data(), tlas.bvh.prim_indices.size()));
   tlas_node_count_ = static_cast<uint32_t>(tlas.bvh.nodes.size());
   std::vector<GlInstanceRecord> records(tlas.instances.size());
   for (size_t i = 0; i < records.size(); ++i) {
@@ -137,8 +143,7 @@ void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, con
     const BlasRegion& region = regions_[instance.blas];
     records[i].world_to_object = instance.world_to_object;
     records[i].node_offset = region.node_offset;
-    records[i].prim_offset = region.prim_offset;
-    records[i].triangle_offset = triangle_offsets_[instance.blas];
+    records[i].slot_offset = region.slot_offset;
     records[i].node_count = static_cast<uint32_t>(meshes.meshes()[instance.blas].bvh.nodes.size());
   }
   write(instances_, 0, std::span<const GlInstanceRecord>(records));
@@ -146,9 +151,9 @@ void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, con
 
 void GlStructureBuffers::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNodeBinding, nodes_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPrimBinding, prims_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTlasRefBinding, tlas_refs_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTriangleBinding, triangles_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLeafTriangleBinding, leaf_triangles_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instances_.id());
 }
 
