@@ -2,6 +2,7 @@
 // scopes nested in them, children within their parent; no scopes.csv without the flag; an earlier
 // run's scopes.csv is an earlier run's file; an output that cannot be written is one line.
 #include "app/cli_runner.h"
+#include "cuda/device_query.h"
 #include "support/temp_folder.h"
 #include "../gl/gl_test_context.h"
 
@@ -85,7 +86,7 @@ TEST_F(RenderScopesCli, WritesEveryFramesNestedScopesWithinTheirParents) {
                              "gbuffer/visibility_gbuffer", "shadow/shadow_rays/ray_generation",
                              "shadow/shadow_rays/trace", "shadow/shadow_rays/mask"})
       EXPECT_TRUE(ms.contains(path)) << path;
-    if (!wall_clock) continue;  // GPU timestamps may overlap neighbours by a little; glFinish intervals cannot
+    // glFinish intervals nest; so do GPU timestamps, each taken once everything before it completed.
     for (const auto& [parent, sum] : children_ms) {
       ASSERT_TRUE(ms.contains(parent)) << parent;
       // Six significant digits in the file: a little rounding slack.
@@ -140,6 +141,36 @@ TEST_F(RenderScopesCli, AnUnwritableScopesCsvIsOneLineAndWritesNothing) {
   const CliResult unwritable = run_glint(std::string(kSmallRun) + "--profile-scopes --out /proc/self/glint-run");
   EXPECT_EQ(unwritable.exit_code, 1);
   EXPECT_EQ(line_count(unwritable.err), 1) << unwritable.err;
+}
+
+// GPU machines only: a CUDA trace runs beside GL, between mapping and unmapping GL's buffers; GL's
+// commands after the unmap wait for it, so the scope around it holds the trace's kernel time.
+TEST_F(RenderScopesCli, CudaTracesAreInsideTheScopesAroundThem) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "needs a CUDA GPU";
+  TempFolder folder;
+  const fs::path out = folder.path() / "cuda";
+  const CliResult r = run_glint("render atrium-simple --width 320 --height 180 --frames 0:11 --timings-only "
+                                "--backend cuda --shadows rt --reflections rt --profile-scopes --out " +
+                                quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json run = nlohmann::json::parse(read_text_file(out / "run.json"));
+  EXPECT_EQ(run["gl"]["pass_timing"], "gpu_queries");
+  const std::map<int, std::vector<Scope>> frames = read_scopes(out / "scopes.csv");
+  const std::vector<std::vector<std::string>> timings = read_csv(out / "timings.csv");
+  const auto column = std::find(timings[0].begin(), timings[0].end(), "trace_ms") - timings[0].begin();
+  double trace_scope_ms = 0.0, trace_kernel_ms = 0.0;
+  for (std::size_t row = 2; row < timings.size(); ++row) {  // the first frame pays for warm-up
+    const int frame = std::stoi(timings[row][0]);
+    trace_kernel_ms += std::stod(timings[row][static_cast<std::size_t>(column)]);
+    bool shadow_trace = false;
+    for (const Scope& scope : frames.at(frame)) {
+      if (scope.path == "trace") trace_scope_ms += scope.ms;
+      if (scope.path == "shadow/shadow_rays/trace") shadow_trace = scope.ms > 0.0;
+    }
+    EXPECT_TRUE(shadow_trace) << "frame " << frame;
+  }
+  // Map and unmap only add to the kernel's time; some slack for the two clocks.
+  EXPECT_GE(trace_scope_ms, 0.8 * trace_kernel_ms);
 }
 
 }  // namespace
