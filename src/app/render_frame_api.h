@@ -5,7 +5,7 @@
 // GL context, FrameLoop with the final image captured), so the image equals the PNG
 // `glint render <scene> --frames <frame>` writes with the same options. Of RenderOptions, the ones
 // that shape a frame are used; the output ones (out, overwrite, debug_views, video, timings_only,
-// command_line) are ignored, and a fixed camera (camera, target) is a glint::Error.
+// profile_scopes, command_line) are ignored, and a fixed camera (camera, target) is a glint::Error.
 #include "app/render_command.h"
 #include "core/image.h"
 
