@@ -12,6 +12,7 @@
 #include "accel/intersect_triangle.h"
 #include "accel/kdtree.h"
 #include "accel/ray.h"
+#include "accel/traverse.h"
 
 namespace glint::accel {
 
@@ -83,6 +84,26 @@ GLINT_HOST_DEVICE bool traverse_kdtree(const KdTreeView& tree, const vec3& origi
     t_near = stack_near[stack_size];
     t_far = stack_far[stack_size];
   }
+}
+
+// As accel/traverse.h's intersect_closest for a BVH (what a two-level walk calls per instance, in
+// object space): updates `hit` (t, prim, u, v; instance untouched) only when something closer than
+// t_max is found, with record_closer_hit's tie rule, and lowers t_max to it.
+GLINT_HOST_DEVICE inline bool intersect_closest(const KdTreeView& tree, const TriangleMesh& mesh, const vec3& origin,
+                                                const vec3& direction, float t_min, float& t_max, Hit& hit) {
+  const WatertightRay ray = make_watertight_ray(origin, direction);
+  return traverse_kdtree<false>(tree, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
+    return record_closer_hit(ray, mesh, prim, t_min, t_limit, hit);
+  });
+}
+
+GLINT_HOST_DEVICE inline bool intersect_any(const KdTreeView& tree, const TriangleMesh& mesh, const vec3& origin,
+                                            const vec3& direction, float t_min, float t_max) {
+  const WatertightRay ray = make_watertight_ray(origin, direction);
+  return traverse_kdtree<true>(tree, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
+    TriangleHit tri_hit;
+    return intersect_triangle(ray, mesh.triangle(prim), t_min, t_limit, tri_hit);
+  });
 }
 
 GLINT_HOST_DEVICE inline Hit trace_closest(const KdTreeView& tree, const TriangleMesh& mesh, const Ray& ray) {

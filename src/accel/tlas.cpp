@@ -29,24 +29,44 @@ Instance make_instance(uint32_t blas, const mat4& object_to_world) {
   return instance;
 }
 
+namespace {
+
+std::vector<Aabb> root_boxes(std::span<const Blas> blases) {
+  std::vector<Aabb> boxes(blases.size());
+  for (size_t b = 0; b < blases.size(); ++b)
+    if (blases[b].bvh.node_count > 0) boxes[b] = blases[b].bvh.nodes[0].bounds();
+  return boxes;
+}
+
+}  // namespace
+
 std::vector<Aabb> instance_world_boxes(std::span<const Blas> blases, std::span<const Instance> instances) {
+  return instance_world_boxes(root_boxes(blases), instances);
+}
+
+std::vector<Aabb> instance_world_boxes(std::span<const Aabb> blas_boxes, std::span<const Instance> instances) {
   std::vector<Aabb> boxes(instances.size());
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& instance = instances[i];
-    if (instance.blas >= blases.size())
-      fail("accel: instance {} uses BLAS {} of {}", i, instance.blas, blases.size());
-    const BvhView& blas = blases[instance.blas].bvh;
-    if (blas.node_count > 0) boxes[i] = transform_aabb(instance.object_to_world, blas.nodes[0].bounds());
+    if (instance.blas >= blas_boxes.size())
+      fail("accel: instance {} uses BLAS {} of {}", i, instance.blas, blas_boxes.size());
+    if (!blas_boxes[instance.blas].empty())
+      boxes[i] = transform_aabb(instance.object_to_world, blas_boxes[instance.blas]);
   }
   return boxes;
 }
 
 Tlas build_tlas(std::span<const Blas> blases, std::vector<Instance> instances, BvhBuilder builder,
                 const BuildOptions& options) {
+  return build_tlas(root_boxes(blases), std::move(instances), builder, options);
+}
+
+Tlas build_tlas(std::span<const Aabb> blas_boxes, std::vector<Instance> instances, BvhBuilder builder,
+                const BuildOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Tlas tlas;
   tlas.instances = std::move(instances);
-  const std::vector<Aabb> boxes = instance_world_boxes(blases, tlas.instances);
+  const std::vector<Aabb> boxes = instance_world_boxes(blas_boxes, tlas.instances);
   std::vector<vec3> centroids(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) {
     // An empty instance still needs a sort key: its origin in world space.
@@ -59,6 +79,10 @@ Tlas build_tlas(std::span<const Blas> blases, std::vector<Instance> instances, B
 
 void refit_tlas(Tlas& tlas, std::span<const Blas> blases) {
   refit(tlas.bvh, instance_world_boxes(blases, tlas.instances));
+}
+
+void refit_tlas(Tlas& tlas, std::span<const Aabb> blas_boxes) {
+  refit(tlas.bvh, instance_world_boxes(blas_boxes, tlas.instances));
 }
 
 }  // namespace glint::accel

@@ -42,12 +42,18 @@ struct Tlas {
 // The world box of every instance: its BLAS root box transformed (an empty BLAS gives an empty
 // box). glint::Error when an instance names a BLAS past the end of `blases`.
 std::vector<Aabb> instance_world_boxes(std::span<const Blas> blases, std::span<const Instance> instances);
+// The same from each BLAS's object-space root box (empty for an empty BLAS), for BLASes of any kind
+// (the kd-tree's, accel/kdtree_tlas.h).
+std::vector<Aabb> instance_world_boxes(std::span<const Aabb> blas_boxes, std::span<const Instance> instances);
 
 Tlas build_tlas(std::span<const Blas> blases, std::vector<Instance> instances, BvhBuilder builder,
+                const BuildOptions& options = {});
+Tlas build_tlas(std::span<const Aabb> blas_boxes, std::vector<Instance> instances, BvhBuilder builder,
                 const BuildOptions& options = {});
 
 // After instance transforms changed (edit tlas.instances through make_instance) or BLASes were
 // refitted: refits the TLAS boxes, keeping its topology.
 void refit_tlas(Tlas& tlas, std::span<const Blas> blases);
+void refit_tlas(Tlas& tlas, std::span<const Aabb> blas_boxes);
 
 }  // namespace glint::accel

@@ -1,6 +1,7 @@
 #include "app/bench_command.h"
 
 #include "accel/builder.h"
+#include "rt/blas_structure.h"
 #include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_report.h"
@@ -237,8 +238,7 @@ int run_bench_command(const BenchOptions& given_options) {
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
   std::vector<std::string> known_backends(std::begin(bench::kBenchBackends), std::end(bench::kBenchBackends));
-  std::vector<std::string> known_accels;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) known_accels.emplace_back(accel::builder_name(builder));
+  const std::vector<std::string> known_accels = rt::blas_structure_names();
   const std::vector<std::string> backends = parse_name_list("--backends", options.backends, known_backends);
   const std::vector<std::string> accels = parse_name_list("--accels", options.accels, known_accels);
   const std::vector<std::string> updates = parse_name_list("--updates", options.updates, {"rebuild", "refit", "auto"});

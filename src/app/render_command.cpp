@@ -42,9 +42,9 @@ double milliseconds_since(Clock::time_point start) {
 
 std::string builder_names() {
   std::string names;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) {
+  for (const std::string& name : rt::blas_structure_names()) {
     if (!names.empty()) names += ", ";
-    names += accel::builder_name(builder);
+    names += name;
   }
   return names;
 }
@@ -78,17 +78,19 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
     if (options.backend == "embree" && options.accel != "sah")
       fail("--accel {} applies to the cpu, cuda and gl backends; the embree backend builds its own structures",
            options.accel);
-    settings.ray_tracing.accel.builder = accel::parse_bvh_builder(options.accel);
+    settings.ray_tracing.accel.set_structure(rt::parse_blas_structure(options.accel));
+    if (options.backend == "gl" && settings.ray_tracing.accel.blas == rt::BlasKind::kdtree)
+      fail("--accel kdtree applies to the cpu and cuda backends; the gl backend traces BVHs only");
   }
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
   // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
   // references cannot be refitted.
   if (render::uses_ray_tracer(settings) && options.deform == "on" && options.backend != "embree" &&
-      settings.ray_tracing.accel.builder == accel::BvhBuilder::sbvh &&
+      !rt::blas_structure_refittable(settings.ray_tracing.accel.structure()) &&
       settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
-    fail("--accel sbvh cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
+    fail("--accel {} cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
          "or --deform off",
-         options.update);
+         options.accel, options.update);
   if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
       !rt::is_gpu_backend(options.backend))
     fail("--deform-on gpu needs --backend cuda or optix when rays are traced (reflections hybrid or rt, shadows rt or "
@@ -170,12 +172,13 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix", "gl"}))
       ->capture_default_str();
   command->add_option("--accel", options.accel,
-                      "Structure of the cpu, cuda and gl backends' per-mesh BVHs: " + builder_names() +
+                      "Structure of the cpu, cuda and gl backends' per-mesh BVHs (kdtree: an SAH kd-tree, cpu and "
+                      "cuda only): " + builder_names() +
                           "; of the optix backend: optix-fasttrace (the default there) or optix-fastbuild")
       ->check([](const std::string& name) {
         if (rt::is_optix_accel_name(name)) return std::string();
         try {
-          (void)accel::parse_bvh_builder(name);
+          (void)rt::parse_blas_structure(name);
           return std::string();
         } catch (const Error& error) {
           return std::string(error.what());

@@ -6,11 +6,13 @@
 #include "cuda/device_query.h"
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_bvh_sah.h"
+#include "cuda/gpu_kdtree.h"
 #include "cuda/gpu_mesh.h"
 #include "cuda/gpu_time_ring.h"
 #include "cuda/gpu_trace.h"
 #include "cuda/pinned_upload.h"
 #include "rt/scene_shape.h"
+#include "rt/update_decision.h"
 
 #include <algorithm>
 #include <chrono>
@@ -101,7 +103,8 @@ private:
     bool host_positions_current = true;
     bool deformable = false;
     DeviceBuffer<Aabb> boxes;  // triangle boxes: the GPU builders' and refit's input
-    GpuBvh bvh;
+    GpuBvh bvh;          // empty with BlasKind::kdtree
+    GpuKdTree kdtree;    // BlasKind::kdtree only: built on the CPU, uploaded
     std::optional<GpuBvhBuild> gpu_builder;
     DeviceBuffer<uint32_t> refit_counters;
     DeviceBuffer<double> sah_sums;
@@ -110,14 +113,28 @@ private:
   void require_built(const char* what) const;
   void require_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) const;
   void rebuild_mesh(uint32_t m);
+  // CPU builders (and the kd-tree) build from host positions: after a GPU deformation, read them back.
+  void read_back_host_positions(MeshState& state);
   // measure_sah: also measure its SAH cost now (the automatic policy reads it at the next update).
   void refit_mesh(uint32_t m, bool measure_sah);
   void upload_blas_views();
+  // instance_boxes_ from the BLASes' root boxes (BVH roots or kd-tree cells) and the transforms.
+  void launch_instance_boxes();
   // The update of the dirty meshes' BLASes and the TLAS, timed (last_update_).
   void update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   void enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   accel::TlasView tlas_view() const {
     return {tlas_.view(), instances_.device(), blas_views_.device()};
+  }
+  bool kdtree() const { return options_.blas == rt::BlasKind::kdtree; }
+  // Calls launch(view) with the TLAS view of this structure's kind: accel::TlasView (BVH BLASes) or
+  // accel::KdTlasView (kd-tree BLASes), whose launches are overloads of the same names.
+  template <typename Launch>
+  void with_tlas_view(Launch&& launch) const {
+    if (kdtree())
+      launch(accel::KdTlasView{tlas_.view(), instances_.device(), kd_blas_views_.device()});
+    else
+      launch(tlas_view());
   }
   // Host-side traces: waits for the trace and throws when its traversal stack overflowed.
   void check_overflow() const;
@@ -149,6 +166,7 @@ private:
   // Small per-update uploads through pinned memory, so enqueuing them never waits for the GPU.
   PinnedUpload<accel::Instance> instances_;
   PinnedUpload<accel::Blas> blas_views_;
+  PinnedUpload<accel::KdBlas> kd_blas_views_;  // BlasKind::kdtree: the meshes' kd-tree views
   DeviceBuffer<Aabb> instance_boxes_;
   GpuBvh tlas_;
   std::optional<GpuBvhBuild> tlas_builder_;
@@ -187,29 +205,27 @@ void CudaRayTracer::require_built(const char* what) const {
 }
 
 void CudaRayTracer::require_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) const {
-  if (policy == rt::UpdatePolicy::rebuild) return;
   for (uint32_t m : dirty_meshes)
-    if (!meshes_[m].bvh.refittable)
-      fail_message("rt cuda: update policy '" + std::string(rt::update_policy_name(policy)) + "' refits, but the " +
-                   std::string(accel::builder_name(options_.builder)) + " builder's BVHs cannot be refitted (mesh '" +
-                   mesh_names_[m] + "'); use policy rebuild or another builder");
+    if (const std::string refusal = rt::update_refusal(name(), policy, options_.structure(), mesh_names_[m]);
+        !refusal.empty())
+      fail_message(refusal);
 }
 
 void CudaRayTracer::rebuild_mesh(uint32_t m) {
   MeshState& state = meshes_[m];
   const uint32_t triangles = state.mesh.triangle_count();
+  if (kdtree()) {
+    read_back_host_positions(state);
+    state.kdtree.upload(accel::build_kdtree(accel::make_indexed_mesh(state.host_positions, state.host_indices)),
+                        stream_.get());
+    return;  // no BVH SAH to measure: a kd-tree is never refitted
+  }
   if (state.gpu_builder) {
     state.boxes.resize(triangles);
     compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_.get());
     state.gpu_builder->build(state.boxes.data(), triangles, state.bvh, stream_.get());
   } else {
-    if (!state.host_positions_current) {
-      // A GPU deformer moved the vertices: the CPU builder needs them on the host.
-      GLINT_CUDA_CHECK(cudaMemcpyAsync(state.host_positions.data(), state.mesh.positions.data(),
-                                       state.mesh.positions.bytes(), cudaMemcpyDeviceToHost, stream_.get()));
-      GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
-      state.host_positions_current = true;
-    }
+    read_back_host_positions(state);
     const accel::Bvh host_bvh = accel::build_bvh(
         options_.builder, accel::make_indexed_mesh(state.host_positions, state.host_indices), options_.build);
     state.bvh.upload(host_bvh, stream_.get());
@@ -218,6 +234,15 @@ void CudaRayTracer::rebuild_mesh(uint32_t m) {
   compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m, stream_.get());
   GLINT_CUDA_CHECK(cudaMemcpyAsync(device_sah_.data() + 2 * m + 1, device_sah_.data() + 2 * m, sizeof(float),
                                    cudaMemcpyDeviceToDevice, stream_.get()));
+}
+
+void CudaRayTracer::read_back_host_positions(MeshState& state) {
+  if (state.host_positions_current) return;
+  // A GPU deformer moved the vertices: the CPU builder needs them on the host.
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(state.host_positions.data(), state.mesh.positions.data(),
+                                   state.mesh.positions.bytes(), cudaMemcpyDeviceToHost, stream_.get()));
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
+  state.host_positions_current = true;
 }
 
 void CudaRayTracer::refit_mesh(uint32_t m, bool measure_sah) {
@@ -233,6 +258,12 @@ void CudaRayTracer::refit_mesh(uint32_t m, bool measure_sah) {
 // The traversal reads each BLAS through a device array of views; a rebuild may move a BVH's
 // storage (a larger CPU-built BVH), so the views are written again after rebuilds.
 void CudaRayTracer::upload_blas_views() {
+  if (kdtree()) {
+    std::vector<accel::KdBlas> views(meshes_.size());
+    for (std::size_t m = 0; m < meshes_.size(); ++m) views[m] = {meshes_[m].kdtree.view(), meshes_[m].mesh.view()};
+    kd_blas_views_.upload(std::span<const accel::KdBlas>(views), stream_.get());
+    return;
+  }
   std::vector<accel::Blas> views(meshes_.size());
   for (std::size_t m = 0; m < meshes_.size(); ++m) views[m] = {meshes_[m].bvh.view(), meshes_[m].mesh.view()};
   blas_views_.upload(std::span<const accel::Blas>(views), stream_.get());
@@ -260,7 +291,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
     mesh_names_.push_back(mesh.name);
     state.deformable = mesh.deformable;
     state.mesh.upload(accel::make_indexed_mesh(mesh.positions, mesh.indices), stream_.get());
-    if (builds_on_gpu(options_.builder)) {
+    if (!kdtree() && builds_on_gpu(options_.builder)) {
       state.gpu_builder.emplace(gpu_builder_of(options_.builder), options_.build);
     } else {
       state.host_positions = mesh.positions;
@@ -274,8 +305,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
     host_instances_.push_back(accel::make_instance(instance.mesh, instance.transform));
   instances_.upload(std::span<const accel::Instance>(host_instances_), stream_.get());
   instance_boxes_.resize(host_instances_.size());
-  launch_instance_world_boxes(instances_.device(), static_cast<uint32_t>(host_instances_.size()), blas_views_.device(),
-                              instance_boxes_.data(), stream_.get());
+  launch_instance_boxes();
   tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
   tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
   overflow_.resize(kTimedSpans + 1);
@@ -289,6 +319,14 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   built_ = true;
 }
 
+void CudaRayTracer::launch_instance_boxes() {
+  const auto count = static_cast<uint32_t>(host_instances_.size());
+  if (kdtree())
+    launch_instance_world_boxes(instances_.device(), count, kd_blas_views_.device(), instance_boxes_.data(), stream_.get());
+  else
+    launch_instance_world_boxes(instances_.device(), count, blas_views_.device(), instance_boxes_.data(), stream_.get());
+}
+
 void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
   last_update_ = timed([&](uint32_t*) { enqueue_update(dirty_meshes, policy); });
 }
@@ -299,12 +337,11 @@ void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::U
   // so waiting for them costs nothing in a frame loop.
   if (policy == rt::UpdatePolicy::automatic && sah_copied_) GLINT_CUDA_CHECK(cudaEventSynchronize(sah_ready_.get()));
   for (uint32_t m : dirty_meshes) {
-    bool rebuild = policy == rt::UpdatePolicy::rebuild;
-    if (policy == rt::UpdatePolicy::automatic && sah_copied_) {
-      const float at_rebuild = host_sah_[2 * m];
-      rebuild = at_rebuild > 0.0f && host_sah_[2 * m + 1] > options_.auto_rebuild_sah_ratio * at_rebuild;
-    }
-    if (rebuild) {
+    // The shared rule (rt/update_decision.h), with the SAH cost of the previous update's refit.
+    const std::optional<double> sah_after_refit =
+        sah_copied_ ? std::optional<double>(host_sah_[2 * m + 1]) : std::nullopt;
+    if (rt::decide_blas_update(policy, sah_after_refit, host_sah_[2 * m], options_.auto_rebuild_sah_ratio) ==
+        rt::BlasUpdate::rebuild) {
       rebuild_mesh(m);
       rebuilt_any = true;
       ++rebuilds_;
@@ -314,8 +351,7 @@ void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::U
     }
   }
   if (rebuilt_any) upload_blas_views();
-  launch_instance_world_boxes(instances_.device(), static_cast<uint32_t>(host_instances_.size()), blas_views_.device(),
-                              instance_boxes_.data(), stream_.get());
+  launch_instance_boxes();
   if (policy == rt::UpdatePolicy::rebuild)
     tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
   else
@@ -402,8 +438,10 @@ void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<ac
   host_hits_.resize(count);
   uint32_t* overflow = device_overflow(kTimedSpans);
   GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
-  launch_trace_closest(tlas_view(), trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count, overflow),
-                       stream_.get());
+  with_tlas_view([&](const auto& tlas) {
+    launch_trace_closest(tlas, trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count, overflow),
+                         stream_.get());
+  });
   GLINT_CUDA_CHECK(
       cudaMemcpyAsync(hits.data(), host_hits_.data(), hits.size_bytes(), cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();
@@ -417,8 +455,10 @@ void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_
   host_occluded_download_.resize(count);
   uint32_t* overflow = device_overflow(kTimedSpans);
   GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
-  launch_trace_any(tlas_view(), trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count, overflow),
-                   stream_.get());
+  with_tlas_view([&](const auto& tlas) {
+    launch_trace_any(tlas, trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count, overflow),
+                     stream_.get());
+  });
   GLINT_CUDA_CHECK(cudaMemcpyAsync(host_occluded_download_.data(), host_occluded_.data(), count * sizeof(uint32_t),
                                    cudaMemcpyDeviceToHost, stream_.get()));
   check_overflow();  // waits for the copy
@@ -443,7 +483,9 @@ rt::GpuTicket CudaRayTracer::trace_closest_device(const accel::Ray* rays, accel:
                                                   uint32_t capacity) {
   require_built("trace_closest_device()");
   return timed([&](uint32_t* overflow) {
-    launch_trace_closest(tlas_view(), trace_launch(rays, hits, nullptr, ray_count, capacity, overflow), stream_.get());
+    with_tlas_view([&](const auto& tlas) {
+      launch_trace_closest(tlas, trace_launch(rays, hits, nullptr, ray_count, capacity, overflow), stream_.get());
+    });
   });
 }
 
@@ -451,7 +493,9 @@ rt::GpuTicket CudaRayTracer::trace_any_device(const accel::Ray* rays, uint32_t* 
                                               uint32_t capacity) {
   require_built("trace_any_device()");
   return timed([&](uint32_t* overflow) {
-    launch_trace_any(tlas_view(), trace_launch(rays, nullptr, occluded, ray_count, capacity, overflow), stream_.get());
+    with_tlas_view([&](const auto& tlas) {
+      launch_trace_any(tlas, trace_launch(rays, nullptr, occluded, ray_count, capacity, overflow), stream_.get());
+    });
   });
 }
 
@@ -465,11 +509,12 @@ rt::HitAndShadowTickets CudaRayTracer::trace_closest_and_hit_shadows_device(cons
   rt::HitAndShadowTickets tickets;
   tickets.closest = trace_closest_device(rays, hits, ray_count, capacity);
   tickets.shadows = timed([&](uint32_t* overflow) {
-    launch_hit_shadow_rays(tlas_view(), rays, hits, ray_count, capacity, shadows.light_position,
-                           shadows.origin_offset, shadows.shadow_rays, stream_.get());
-    launch_trace_any(tlas_view(), trace_launch(shadows.shadow_rays, nullptr, shadows.occluded, ray_count, capacity,
-                                               overflow),
-                     stream_.get());
+    with_tlas_view([&](const auto& tlas) {
+      launch_hit_shadow_rays(tlas, rays, hits, ray_count, capacity, shadows.light_position, shadows.origin_offset,
+                             shadows.shadow_rays, stream_.get());
+      launch_trace_any(tlas, trace_launch(shadows.shadow_rays, nullptr, shadows.occluded, ray_count, capacity, overflow),
+                       stream_.get());
+    });
   });
   return tickets;
 }
@@ -491,18 +536,21 @@ rt::RayTracerStats CudaRayTracer::stats() const {
   // The deformable meshes' SAH cost now (refits measure it only for the automatic policy), next to
   // their cost at the last rebuild.
   const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
+  // A kd-tree has no BVH SAH: no drift.
   for (uint32_t m = 0; m < meshes_.size(); ++m)
-    if (meshes_[m].deformable)
+    if (meshes_[m].deformable && !kdtree())
       compute_sah_gpu(meshes_[m].bvh, costs, stats_sah_sums_, device_sah_.data() + 2 * m + 1, stream_.get());
   GLINT_CUDA_CHECK(cudaMemcpyAsync(host_sah_.data(), device_sah_.data(), device_sah_.bytes(), cudaMemcpyDeviceToHost,
                                    stream_.get()));
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   uint64_t bytes = tlas_.memory_bytes() + instances_.size() * sizeof(accel::Instance) +
-                   blas_views_.size() * sizeof(accel::Blas) + instance_boxes_.bytes();
+                   blas_views_.size() * sizeof(accel::Blas) + kd_blas_views_.size() * sizeof(accel::KdBlas) +
+                   instance_boxes_.bytes();
   for (uint32_t m = 0; m < meshes_.size(); ++m) {
     const MeshState& state = meshes_[m];
-    bytes += state.bvh.memory_bytes() + state.mesh.positions.bytes() + state.mesh.indices.bytes();
-    if (!state.deformable || host_sah_[2 * m] <= 0.0f) continue;
+    bytes += state.bvh.memory_bytes() + state.kdtree.memory_bytes() + state.mesh.positions.bytes() +
+             state.mesh.indices.bytes();
+    if (kdtree() || !state.deformable || host_sah_[2 * m] <= 0.0f) continue;
     const double drift = static_cast<double>(host_sah_[2 * m + 1]) / static_cast<double>(host_sah_[2 * m]);
     stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);
   }

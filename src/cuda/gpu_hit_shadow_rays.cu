@@ -7,7 +7,9 @@ namespace {
 
 constexpr unsigned int kBlock = 128;
 
-__global__ void hit_shadow_rays_kernel(accel::TlasView tlas, const accel::Ray* rays, const accel::Hit* hits,
+// View: accel::TlasView or accel::KdTlasView (the hit triangle comes from the instance's mesh either way).
+template <typename View>
+__global__ void hit_shadow_rays_kernel(View tlas, const accel::Ray* rays, const accel::Hit* hits,
                                        const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
                                        accel::Ray* shadow_rays) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
@@ -25,16 +27,28 @@ __global__ void hit_shadow_rays_kernel(accel::TlasView tlas, const accel::Ray* r
                                       to_world(triangle.v2), light, origin_offset);
 }
 
-}  // namespace
-
-void launch_hit_shadow_rays(const accel::TlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
-                            const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
-                            accel::Ray* shadow_rays, cudaStream_t stream) {
+template <typename View>
+void launch_kernel(const View& tlas, const accel::Ray* rays, const accel::Hit* hits, const uint32_t* ray_count,
+                   uint32_t capacity, vec3 light, float origin_offset, accel::Ray* shadow_rays, cudaStream_t stream) {
   if (capacity == 0) return;
   const unsigned int blocks = (capacity + kBlock - 1) / kBlock;
   hit_shadow_rays_kernel<<<blocks, kBlock, 0, stream>>>(tlas, rays, hits, ray_count, capacity, light, origin_offset,
                                                          shadow_rays);
   GLINT_CUDA_CHECK(cudaGetLastError());
+}
+
+}  // namespace
+
+void launch_hit_shadow_rays(const accel::TlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
+                            const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
+                            accel::Ray* shadow_rays, cudaStream_t stream) {
+  launch_kernel(tlas, rays, hits, ray_count, capacity, light, origin_offset, shadow_rays, stream);
+}
+
+void launch_hit_shadow_rays(const accel::KdTlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
+                            const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
+                            accel::Ray* shadow_rays, cudaStream_t stream) {
+  launch_kernel(tlas, rays, hits, ray_count, capacity, light, origin_offset, shadow_rays, stream);
 }
 
 }  // namespace glint::cuda

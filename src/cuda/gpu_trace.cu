@@ -27,15 +27,18 @@ __device__ inline accel::Ray load_ray(const accel::Ray* rays, uint32_t i) {
 }
 
 // What one thread does with ray slot i, per query and kind of structure: trace it, write its result.
+// View: accel::TlasView (BVH BLASes) or accel::KdTlasView (kd-tree BLASes), each its own kernel.
+template <typename View>
 struct TwoLevelTrace {
-  accel::TlasView tlas;
+  View tlas;
   __device__ void operator()(const TraceLaunch& launch, uint32_t i, const accel::Ray& ray, bool& overflow) const {
     launch.hits[i] = gpu_trace_closest(tlas, ray, overflow);
   }
 };
 
+template <typename View>
 struct TwoLevelOcclusion {
-  accel::TlasView tlas;
+  View tlas;
   __device__ void operator()(const TraceLaunch& launch, uint32_t i, const accel::Ray& ray, bool& overflow) const {
     launch.occluded[i] = gpu_trace_any(tlas, ray, overflow) ? 1u : 0u;
   }
@@ -121,35 +124,67 @@ __global__ void __launch_bounds__(kTraceBlock)
   if (i < count) hits[i] = accel::trace_closest(tree, mesh, load_ray(rays, i));
 }
 
-__global__ void instance_boxes_kernel(const accel::Instance* instances, uint32_t count, const accel::Blas* blases,
+// A BLAS's object-space root box (empty for an empty structure): a BVH's root node, a kd-tree's cell.
+__device__ inline Aabb root_box(const accel::Blas& blas) {
+  if (blas.bvh.node_count == 0) return Aabb{};
+  const accel::BvhNode root = load_node(blas.bvh.nodes, 0);
+  return {root.bounds_min, root.bounds_max};
+}
+
+__device__ inline Aabb root_box(const accel::KdBlas& blas) {
+  return blas.tree.node_count == 0 ? Aabb{} : blas.tree.bounds;
+}
+
+template <typename BlasView>
+__global__ void instance_boxes_kernel(const accel::Instance* instances, uint32_t count, const BlasView* blases,
                                       Aabb* boxes) {
   const uint32_t i = blockIdx.x * blockDim.x + threadIdx.x;
   if (i >= count) return;
   const accel::Instance& instance = instances[i];
-  const accel::BvhView& bvh = blases[instance.blas].bvh;
+  const Aabb root = root_box(blases[instance.blas]);
   Aabb world;
-  if (bvh.node_count != 0) {
-    const accel::BvhNode root = load_node(bvh.nodes, 0);
+  if (!root.empty()) {
     for (int corner = 0; corner < 8; ++corner) {
-      const vec3 p((corner & 1) ? root.bounds_max.x : root.bounds_min.x,
-                   (corner & 2) ? root.bounds_max.y : root.bounds_min.y,
-                   (corner & 4) ? root.bounds_max.z : root.bounds_min.z);
+      const vec3 p((corner & 1) ? root.max.x : root.min.x, (corner & 2) ? root.max.y : root.min.y,
+                   (corner & 4) ? root.max.z : root.min.z);
       world.extend(vec3(instance.object_to_world * vec4(p, 1.0f)));
     }
   }
   boxes[i] = world;
 }
 
+template <typename BlasView>
+void launch_instance_boxes(const accel::Instance* instances, uint32_t instance_count, const BlasView* blases,
+                           Aabb* boxes, cudaStream_t stream) {
+  if (instance_count == 0) return;
+  instance_boxes_kernel<<<blocks(instance_count, kBoxBlock), kBoxBlock, 0, stream>>>(instances, instance_count,
+                                                                                      blases, boxes);
+  GLINT_CUDA_CHECK_LAUNCH();
+}
+
+template <typename View>
+void launch_any(const View& tlas, const TraceLaunch& launch, cudaStream_t stream) {
+  if (launch.capacity != 0 && launch.occluded == nullptr)
+    fail_message("rt cuda: an any-hit launch needs an occlusion buffer");
+  launch_kernel(TwoLevelOcclusion<View>{tlas}, launch, stream);
+}
+
 }  // namespace
 
 void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
-  launch_kernel(TwoLevelTrace{tlas}, launch, stream);
+  launch_kernel(TwoLevelTrace<accel::TlasView>{tlas}, launch, stream);
 }
 
 void launch_trace_any(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
-  if (launch.capacity != 0 && launch.occluded == nullptr)
-    fail_message("rt cuda: an any-hit launch needs an occlusion buffer");
-  launch_kernel(TwoLevelOcclusion{tlas}, launch, stream);
+  launch_any(tlas, launch, stream);
+}
+
+void launch_trace_closest(const accel::KdTlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
+  launch_kernel(TwoLevelTrace<accel::KdTlasView>{tlas}, launch, stream);
+}
+
+void launch_trace_any(const accel::KdTlasView& tlas, const TraceLaunch& launch, cudaStream_t stream) {
+  launch_any(tlas, launch, stream);
 }
 
 void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream) {
@@ -165,10 +200,12 @@ void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMe
 
 void launch_instance_world_boxes(const accel::Instance* instances, uint32_t instance_count,
                                  const accel::Blas* blases, Aabb* boxes, cudaStream_t stream) {
-  if (instance_count == 0) return;
-  instance_boxes_kernel<<<blocks(instance_count, kBoxBlock), kBoxBlock, 0, stream>>>(instances, instance_count,
-                                                                                      blases, boxes);
-  GLINT_CUDA_CHECK_LAUNCH();
+  launch_instance_boxes(instances, instance_count, blases, boxes, stream);
+}
+
+void launch_instance_world_boxes(const accel::Instance* instances, uint32_t instance_count,
+                                 const accel::KdBlas* blases, Aabb* boxes, cudaStream_t stream) {
+  launch_instance_boxes(instances, instance_count, blases, boxes, stream);
 }
 
 }  // namespace glint::cuda

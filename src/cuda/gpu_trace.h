@@ -2,6 +2,7 @@
 // The closest-hit and any-hit (occlusion) kernels over a ray list in device memory (the CUDA
 // backend's trace), and the instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
 #include "accel/kdtree.h"
+#include "accel/kdtree_tlas.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
 #include "cuda/trace_kernel.h"
@@ -37,10 +38,18 @@ void launch_trace_closest(const accel::TlasView& tlas, const TraceLaunch& launch
 // mode). Asynchronous on `stream`.
 void launch_trace_any(const accel::TlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
 
+// The same two queries through a TLAS whose BLASes are kd-trees (AccelOptions::blas = kdtree), in
+// kernels of their own (the BVH kernels stay as they are).
+void launch_trace_closest(const accel::KdTlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
+void launch_trace_any(const accel::KdTlasView& tlas, const TraceLaunch& launch, cudaStream_t stream);
+
 // shadow_rays[i] = rt::hit_shadow_ray of reflection ray i and its closest hit hits[i] (the hit
 // triangle from `tlas`'s instances and meshes), towards `light`, for i < min(*ray_count, capacity)
 // (ray_count may be null: `capacity`). Slots past the count are not written. Asynchronous on `stream`.
 void launch_hit_shadow_rays(const accel::TlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
+                            const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
+                            accel::Ray* shadow_rays, cudaStream_t stream);
+void launch_hit_shadow_rays(const accel::KdTlasView& tlas, const accel::Ray* rays, const accel::Hit* hits,
                             const uint32_t* ray_count, uint32_t capacity, vec3 light, float origin_offset,
                             accel::Ray* shadow_rays, cudaStream_t stream);
 
@@ -56,5 +65,8 @@ void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMe
 // device memory) transformed by object_to_world; empty for an empty BLAS. Asynchronous on `stream`.
 void launch_instance_world_boxes(const accel::Instance* instances, uint32_t instance_count,
                                  const accel::Blas* blases, Aabb* boxes, cudaStream_t stream);
+// The same from kd-tree BLASes' root cells.
+void launch_instance_world_boxes(const accel::Instance* instances, uint32_t instance_count,
+                                 const accel::KdBlas* blases, Aabb* boxes, cudaStream_t stream);
 
 }  // namespace glint::cuda

@@ -11,6 +11,7 @@
 #include "accel/bvh_node.h"
 #include "accel/intersect_box.h"
 #include "accel/intersect_triangle.h"
+#include "accel/kdtree_tlas.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
 #include "accel/traverse.h"
@@ -144,6 +145,36 @@ __device__ inline bool gpu_trace_any(const accel::TlasView& tlas, const accel::R
     const accel::ObjectRay local = accel::to_object_space(instance, ray);
     return gpu_intersect_any(tlas.blases[instance.blas], local.origin, local.direction, ray.t_min, ray.t_max,
                              overflow);
+  });
+}
+
+// Two levels whose BLASes are kd-trees (AccelOptions::blas = kdtree): the same guarded TLAS walk; at
+// an instance leaf, accel/kdtree_tlas.h's object-space kd-tree walk (front to back, its stack bounded
+// by the builder's depth limit, so it needs no guard) with the current closest t as its limit.
+__device__ inline accel::Hit gpu_trace_closest(const accel::KdTlasView& tlas, const accel::Ray& ray, bool& overflow) {
+  accel::Hit hit;
+  float t_max = ray.t_max;
+  gpu_traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
+                          [&](uint32_t index, float& t_limit) {
+    const accel::Instance& instance = tlas.instances[index];
+    const accel::ObjectRay local = accel::to_object_space(instance, ray);
+    const accel::KdBlas& blas = tlas.blases[instance.blas];
+    if (!accel::intersect_closest(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, t_limit, hit))
+      return false;
+    hit.instance = index;
+    return true;
+  });
+  return hit;
+}
+
+__device__ inline bool gpu_trace_any(const accel::KdTlasView& tlas, const accel::Ray& ray, bool& overflow) {
+  float t_max = ray.t_max;
+  return gpu_traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
+                                [&](uint32_t index, float&) {
+    const accel::Instance& instance = tlas.instances[index];
+    const accel::ObjectRay local = accel::to_object_space(instance, ray);
+    const accel::KdBlas& blas = tlas.blases[instance.blas];
+    return accel::intersect_any(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, ray.t_max);
   });
 }
 

@@ -98,6 +98,7 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   scene.validate();
   if (!(options.auto_rebuild_sah_ratio >= 1.0f))
     fail("rt gl: auto_rebuild_sah_ratio must be >= 1 (got {})", options.auto_rebuild_sah_ratio);
+  if (options.blas != rt::BlasKind::bvh) fail("rt gl: the gl backend traces BVHs only; kdtree is a cpu and cuda structure");
   const auto start = std::chrono::steady_clock::now();
   built_ = false;
   options_ = options;

@@ -1,11 +1,13 @@
 #include "rt/cpu_ray_tracer.h"
 
 #include "accel/bvh_stats.h"
+#include "accel/kdtree_tlas.h"
 #include "accel/refit.h"
 #include "accel/tlas_trace.h"
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "core/error.h"
+#include "rt/update_decision.h"
 #include "rt/wide_two_level_trace.h"
 
 #include <algorithm>
@@ -38,6 +40,11 @@ accel::TriangleMesh CpuRayTracer::mesh_view(const MeshBlas& mesh) const {
 void CpuRayTracer::rebuild_blas(uint32_t mesh_index) {
   MeshBlas& mesh = meshes_[mesh_index];
   const accel::TriangleMesh view = mesh_view(mesh);
+  if (options_.blas == BlasKind::kdtree) {
+    mesh.kdtree = accel::build_kdtree(view);
+    kd_blases_[mesh_index] = accel::make_kd_blas(mesh.kdtree, view);
+    return;
+  }
   mesh.bvh = accel::build_bvh(options_.builder, view, options_.build);
   mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
   // The new BVH lives in new storage: the traversal's view must follow it.
@@ -64,6 +71,7 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
   meshes_.clear();
   meshes_.resize(scene.meshes.size());
   blases_.assign(scene.meshes.size(), accel::Blas{});
+  kd_blases_.assign(options.blas == BlasKind::kdtree ? scene.meshes.size() : 0, accel::KdBlas{});
   wide_blases_.assign(scene.meshes.size(), nullptr);
   for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
     meshes_[m].positions = scene.meshes[m].positions;
@@ -71,7 +79,11 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
     meshes_[m].deformable = scene.meshes[m].deformable;
     rebuild_blas(m);
   }
-  tlas_ = accel::build_tlas(blases_, make_instances(scene), accel::BvhBuilder::sah, options_.build);
+  // The TLAS over the BLASes' root boxes: the BVHs' root nodes, or the kd-trees' root cells.
+  tlas_ = options_.blas == BlasKind::kdtree
+              ? accel::build_tlas(accel::kd_blas_boxes(kd_blases_), make_instances(scene), accel::BvhBuilder::sah,
+                                  options_.build)
+              : accel::build_tlas(blases_, make_instances(scene), accel::BvhBuilder::sah, options_.build);
   build_ms_ = ms_since(start);
   last_update_ms_ = 0.0;
   rebuilds_ = refits_ = 0;
@@ -81,29 +93,23 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
 void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) {
   require_built("update()");
   check_update(name(), shape_, scene, dirty_meshes);
-  if (policy != UpdatePolicy::rebuild && !dirty_meshes.empty()) {
-    // Checked before anything changes, so a refused update leaves the structures as they were.
-    for (uint32_t m : dirty_meshes)
-      if (!meshes_[m].bvh.refittable)
-        fail("rt cpu: update policy '{}' refits, but the {} builder's BVHs cannot be refitted (mesh '{}'); use "
-             "policy rebuild or another builder",
-             update_policy_name(policy), accel::builder_name(options_.builder), scene.meshes[m].name);
-  }
+  // Checked before anything changes, so a refused update leaves the structures as they were.
+  for (uint32_t m : dirty_meshes)
+    if (const std::string refusal = update_refusal(name(), policy, options_.structure(), scene.meshes[m].name);
+        !refusal.empty())
+      fail("{}", refusal);
   const auto start = std::chrono::steady_clock::now();
   for (uint32_t m : dirty_meshes) {
     MeshBlas& mesh = meshes_[m];
     // Same count (checked above), new positions: the views' pointers stay valid.
     std::copy(scene.meshes[m].positions.begin(), scene.meshes[m].positions.end(), mesh.positions.begin());
-    if (policy == UpdatePolicy::rebuild) {
-      rebuild_blas(m);
-      ++rebuilds_;
-      continue;
-    }
-    // The binary BVH is refitted even when tracing is wide: the TLAS boxes and the SAH drift come
-    // from it.
-    accel::refit(mesh.bvh, mesh_view(mesh));
-    if (policy == UpdatePolicy::automatic &&
-        sah_cost(mesh.bvh, options_.build) > static_cast<double>(options_.auto_rebuild_sah_ratio) * mesh.sah_at_rebuild) {
+    // Refit first (the automatic rule measures the refitted BVH). The binary BVH is refitted even
+    // when tracing is wide: the TLAS boxes and the SAH drift come from it.
+    if (policy != UpdatePolicy::rebuild) accel::refit(mesh.bvh, mesh_view(mesh));
+    const std::optional<double> sah_now =
+        policy == UpdatePolicy::automatic ? std::optional<double>(sah_cost(mesh.bvh, options_.build)) : std::nullopt;
+    if (decide_blas_update(policy, sah_now, mesh.sah_at_rebuild, options_.auto_rebuild_sah_ratio) ==
+        BlasUpdate::rebuild) {
       rebuild_blas(m);
       ++rebuilds_;
     } else {
@@ -118,13 +124,18 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
   // TLAS is small.
   for (size_t i = 0; i < scene.instances.size(); ++i)
     tlas_.instances[i] = accel::make_instance(scene.instances[i].mesh, scene.instances[i].transform);
-  accel::refit_tlas(tlas_, blases_);
+  if (options_.blas == BlasKind::kdtree)
+    accel::refit_tlas(tlas_, accel::kd_blas_boxes(kd_blases_));
+  else
+    accel::refit_tlas(tlas_, blases_);
   last_update_ms_ = ms_since(start);
 }
 
 void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
   require_built("trace_closest()");
-  if (options_.wide_traversal)
+  if (options_.blas == BlasKind::kdtree)
+    accel::trace_closest(tlas_, kd_blases_, rays, hits);
+  else if (options_.wide_traversal)
     trace_closest_wide(tlas_, blases_, wide_blases_, rays, hits);
   else
     accel::trace_closest(tlas_, blases_, rays, hits);
@@ -132,7 +143,9 @@ void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<acc
 
 void CpuRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
   require_built("trace_any()");
-  if (options_.wide_traversal)
+  if (options_.blas == BlasKind::kdtree)
+    accel::trace_any(tlas_, kd_blases_, rays, occluded);
+  else if (options_.wide_traversal)
     trace_any_wide(tlas_, blases_, wide_blases_, rays, occluded);
   else
     accel::trace_any(tlas_, blases_, rays, occluded);
@@ -150,7 +163,8 @@ RayTracerStats CpuRayTracer::stats() const {
   for (const MeshBlas& mesh : meshes_) {
     bytes += accel::compute_stats(mesh.bvh).memory_bytes + mesh.positions.size() * sizeof(vec3) +
              mesh.indices.size() * sizeof(uint32_t) + mesh.wide.nodes.size() * sizeof(accel::WideNode<8>) +
-             mesh.wide.blocks.size() * sizeof(accel::TriangleBlock<8>);
+             mesh.wide.blocks.size() * sizeof(accel::TriangleBlock<8>) +
+             mesh.kdtree.nodes.size() * sizeof(accel::KdNode) + mesh.kdtree.prim_indices.size() * sizeof(uint32_t);
     if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
     const double drift = sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild;
     stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);

@@ -13,6 +13,7 @@
 #include "accel/build_options.h"
 #include "accel/ray.h"
 #include "cuda/trace_kernel.h"
+#include "rt/blas_structure.h"
 #include "rt/gas_build_preference.h"
 #include "scene/scene.h"
 
@@ -44,6 +45,14 @@ struct AccelOptions {
   // cpu backend: the builder of every BLAS (the TLAS over instances is always binned SAH: it is
   // small, and it must be refittable whatever the BLAS builder is).
   accel::BvhBuilder builder = accel::BvhBuilder::sah;
+  // cpu and cuda backends: kdtree builds an SAH kd-tree per mesh instead of a BVH (`builder` unused;
+  // it cannot be refitted, so updates need UpdatePolicy::rebuild); the other backends refuse it.
+  BlasKind blas = BlasKind::bvh;
+  BlasStructure structure() const { return {blas, builder}; }
+  void set_structure(const BlasStructure& structure) {
+    blas = structure.kind;
+    builder = structure.builder;
+  }
   accel::BuildOptions build;
   // UpdatePolicy::automatic (cpu backend): a deformable mesh's BLAS is refitted, and rebuilt when
   // its SAH cost after the refit exceeds this factor times its SAH cost at its last (re)build.

@@ -1,6 +1,7 @@
 #include "app/bench/paper_matrix.h"
 
 #include "core/error.h"
+#include "rt/blas_structure.h"
 
 #include <fmt/format.h>
 
@@ -17,6 +18,10 @@ std::optional<std::string> skip_reason(const MatrixOptions& options, const Struc
     return fmt::format("backend {} unavailable: {}", structure.backend, found->second);
   if (structure.accel == "sbvh" && (update == "refit" || update == "auto"))
     return std::string("sbvh cannot be refitted (its spatial splits reference triangles in several leaves)");
+  if (structure.accel == rt::kKdTreeStructureName && (update == "refit" || update == "auto"))
+    return std::string("kdtree cannot be refitted (a triangle is referenced by every cell it crosses)");
+  if (structure.accel == rt::kKdTreeStructureName && structure.backend == "gl")
+    return std::string("the gl backend traces BVHs only (kdtree: cpu and cuda backends)");
   return std::nullopt;
 }
 
