@@ -52,3 +52,13 @@ uint instance_of_triangle(uint triangle, uint instance_count) {
   }
   return lo;
 }
+
+// The id the id draw writes for the triangle kept at pixel index i ({instance + 1, triangle in its
+// mesh}; {0, 0} where nothing was drawn): what compute_visibility_ids.comp.glsl stores and the depth
+// draw (compute_visibility_resolve.frag.glsl) writes again with the depth.
+uvec2 kept_triangle_id(uint i, uint instance_count) {
+  const uint triangle = winners[i];
+  if (triangle == kNothingDrawn) return uvec2(0u);
+  const uint instance = instance_of_triangle(triangle, instance_count);
+  return uvec2(instance + 1u, triangle - instance_first_triangle[instance]);
+}

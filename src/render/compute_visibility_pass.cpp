@@ -100,6 +100,7 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
       large_program_(ShaderProgram::from_embedded({"compute_visibility_large.comp.glsl"})),
       scan_program_(ShaderProgram::from_embedded({"compute_visibility_scan.comp.glsl"})),
       tile_program_(ShaderProgram::from_embedded({"compute_visibility_tiles.comp.glsl"})),
+      ids_program_(ShaderProgram::from_embedded({"compute_visibility_ids.comp.glsl"})),
       resolve_program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "compute_visibility_resolve.frag.glsl"})),
       framebuffer_(create_framebuffer()),
       empty_vertex_array_(create_vertex_array()) {
@@ -114,7 +115,7 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
 
   for (ShaderProgram* program : {&large_program_, &scan_program_, &tile_program_})
     set_uint(*program, "large_capacity", capacity_);
-  for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_, &resolve_program_})
+  for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_, &ids_program_, &resolve_program_})
     set_uint(*program, "instance_count", instance_count_);
   set_uint(triangle_program_, "triangle_count", triangle_count_);
 
@@ -187,6 +188,21 @@ void ComputeVisibilityPass::run() {
   round1.reset();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
+  // The ids by a compute dispatch; the depth only when asked (write_depth).
+  ids_program_.use();
+  glBindImageTexture(0, t.visibility_id.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kVisibilityIdFormat);
+  { GlPassScope stage("ids"); dispatch_over_image(t.width, t.height); }
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  check_gl("compute visibility");
+}
+
+void ComputeVisibilityPass::write_depth() const {
+  GlPassScope scope("compute_visibility_depth");
+  const RasterTargets& t = *targets_;
+  scene_->bind_resources();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepthKeyBinding, depth_keys_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   // Ids and depth through the framebuffer the id draw would use: every pixel written, depth
   // test on so that depth is written, always passing.
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
@@ -198,12 +214,12 @@ void ComputeVisibilityPass::run() {
   glDisable(GL_BLEND);
   resolve_program_.use();
   glBindVertexArray(empty_vertex_array_.id());
-  { GlPassScope stage("resolve"); glDrawArrays(GL_TRIANGLES, 0, 3); }
+  glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
   glDepthFunc(GL_LESS);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  check_gl("compute visibility");
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+  check_gl("compute visibility: depth");
 }
 
 ComputeVisibilityStats ComputeVisibilityPass::read_stats() const {

@@ -96,7 +96,12 @@ ImageRgbaF RasterPipeline::read_rgbaf(RasterOutput output) const {
     case RasterOutput::WorldNormalRoughness:
       return read_texture_rgbaf(world_normal_roughness(), kWorldNormalRoughnessFormat, w, h);
     case RasterOutput::MaterialId: return read_texture_rgbaf(material_id(), kMaterialIdFormat, w, h);
-    case RasterOutput::Depth: return read_texture_rgbaf(depth(), kDepthFormat, w, h);
+    case RasterOutput::Depth:
+      if (compute_visibility_) {  // the compute raster writes it on demand
+        glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants_buffer_.id());
+        compute_visibility_->write_depth();
+      }
+      return read_texture_rgbaf(depth(), kDepthFormat, w, h);
     case RasterOutput::ShadowMask: return read_texture_rgbaf(shadow_mask(), kShadowMaskFormat, w, h);
     case RasterOutput::Lit: return read_texture_rgbaf(lit(), kLitFormat, w, h);
   }
