@@ -30,7 +30,9 @@ TEST_F(ViewerSessionTest, FlyingFromThePathCameraSeesThePathFrame) {
   const int frame = 2100;  // a deforming creature near the camera, SSR failures traced
   const ImageRgba8 path = *session.render({frame, std::nullopt}).final_image;
   EXPECT_TRUE(session.last_render_rebuilt());
-  // Flown from another frame's pose first, so the flight must pose the scene at `frame` itself.
+  // Another frame's pose first (on the path, then flown), so the flight must pose the scene at
+  // `frame` itself.
+  (void)session.render({frame - 300, std::nullopt});
   (void)session.render({frame - 300, session.walkthrough_state(frame - 300).camera});
   const FrameMeasurement flown = session.render({frame, session.walkthrough_state(frame).camera});
   EXPECT_EQ(flown.final_image->pixels, path.pixels);
