@@ -7,7 +7,9 @@ Reads DIR/summary.json (written by `glint bench`) and writes DIR/charts/<name>.p
   fig5, fig7, fig8, fig9, fig10  frame time along the walkthrough per structure (interval means, as
                                  the paper's line charts), and a bar per structure (mean, with the
                                  5th-95th percentile range)
+  fig11                          per structure, rebuild time against render time (the paper's Fig. 11)
   fig12                          ssr, hybrid and rt along the walkthrough, static and deforming
+  fig4                           the full scene's floor plan with the camera and light paths
   table1, table2                 colour buckets and SSIM of ssr and hybrid against rt per frame
 Needs python3-matplotlib only. glint copies this script next to its results; the source is
 tools/plot_bench.py in the glint repository.
@@ -120,6 +122,76 @@ def plot_fig12(summary, out_dir):
     return True
 
 
+def plot_fig11(summary, out_dir):
+    points = [p for p in summary.get("fig11", []) if p["render_ms"] is not None]
+    if not points:
+        return False
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for measured, marker, legend in ((True, "o", "rebuild every frame (deforming cell)"),
+                                     (False, "s", "whole build (static cell; no rebuild cell)")):
+        chosen = [p for p in points if (p["rebuild_ms"] is not None) == measured and
+                  (measured or p["build_ms"] is not None)]
+        if not chosen:
+            continue
+        xs = [p["rebuild_ms"] if measured else p["build_ms"] for p in chosen]
+        ys = [p["render_ms"] for p in chosen]
+        ax.scatter(xs, ys, marker=marker, s=36, color="tab:blue" if measured else "tab:orange", label=legend,
+                   zorder=3)
+        for x, y, p in zip(xs, ys, chosen):
+            ax.annotate(p["structure"], (x, y), textcoords="offset points", xytext=(4, 4), fontsize=7)
+    style_axes(ax, "Fig. 11: rebuild time against render time", "rebuild time (ms)",
+               "render time: mean frame time, static (ms)")
+    if ax.collections:
+        ax.set_xlim(left=0)
+        ax.set_ylim(bottom=0)
+        ax.legend(fontsize=7, loc="best")
+    fig.suptitle(setting_text(summary), fontsize=8, x=0.99, ha="right")
+    save(fig, out_dir, "fig11")
+    return True
+
+
+FLOOR_COLOURS = {"#": (0.55, 0.55, 0.55), "d": (0.80, 0.35, 0.10)}
+
+
+def plot_fig4(summary, out_dir):
+    plan = summary.get("floor_plan")
+    if not plan:
+        return False
+    grid = plan["grid"]
+    rows, columns, cell = grid["rows"], grid["columns"], grid["cell"]
+    x0, z0 = grid["origin"]
+    image = [[(1.0, 1.0, 1.0) for _ in range(columns)] for _ in range(rows)]
+    for r, line in enumerate(grid["cells"]):
+        for c, value in enumerate(line):
+            if value in FLOOR_COLOURS:
+                image[r][c] = FLOOR_COLOURS[value]
+    extent = (x0, x0 + columns * cell, z0 + rows * cell, z0)  # z grows down the page, as a top view
+    width = 11.0
+    height = max(2.5, min(9.0, width * rows / max(columns, 1) + 1.2))
+    fig, ax = plt.subplots(figsize=(width, height))
+    ax.imshow(image, extent=extent, interpolation="nearest")
+    camera, light = plan["camera"], plan["light"]
+    ax.plot([p[0] for p in camera], [p[1] for p in camera], color="tab:blue", linewidth=1.4, label="camera path")
+    ax.plot([p[0] for p in light], [p[1] for p in light], color="gold", linewidth=1.4, linestyle="--",
+            label="light path")
+    if camera:
+        ax.plot(camera[0][0], camera[0][1], marker="o", color="tab:blue", markersize=5)
+    for letter, mark in zip("abcdefgh", plan["marked_frames"]):
+        (cx, cz), (tx, tz) = mark["camera"], mark["target"]
+        ax.annotate("", xy=(cx + 0.15 * (tx - cx), cz + 0.15 * (tz - cz)), xytext=(cx, cz),
+                    arrowprops={"arrowstyle": "->", "color": "tab:red", "linewidth": 1.2})
+        ax.plot(cx, cz, marker="o", color="tab:red", markersize=4)
+        ax.annotate("({}) {}".format(letter, mark["frame"]), (cx, cz), textcoords="offset points", xytext=(4, -10),
+                    fontsize=7, color="tab:red")
+    ax.plot([], [], color=FLOOR_COLOURS["#"], linewidth=6, label="geometry at walking height")
+    ax.plot([], [], color=FLOOR_COLOURS["d"], linewidth=6, label="deforming meshes")
+    style_axes(ax, "Fig. 4: floor plan of {} with the camera path".format(plan["scene"]), "x", "z")
+    ax.set_aspect("equal")
+    ax.legend(fontsize=7, loc="upper right", ncol=2)
+    save(fig, out_dir, "fig4")
+    return True
+
+
 def plot_quality(summary, table, title, out_dir):
     cells = done_cells(summary, table)
     if not cells:
@@ -160,8 +232,12 @@ def main(argv):
     for figure, title in FRAME_FIGURES.items():
         if plot_frame_figure(summary, figure, title, out_dir):
             made.append(figure)
+    if plot_fig11(summary, out_dir):
+        made.append("fig11")
     if plot_fig12(summary, out_dir):
         made.append("fig12")
+    if plot_fig4(summary, out_dir):
+        made.append("fig4")
     for table, title in QUALITY_TABLES.items():
         if plot_quality(summary, table, title, out_dir):
             made.append(table)

@@ -6,6 +6,8 @@
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_report.h"
 #include "app/bench/bench_summary.h"
+#include "app/bench/fig11_points.h"
+#include "app/bench/floor_plan.h"
 #include "app/bench/cell_run.h"
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
@@ -316,6 +318,8 @@ int run_bench_command(const BenchOptions& given_options) {
   for (const PlannedCell& planned : cells)
     summary["cells"].push_back(
         bench::cell_summary(planned.cell, planned.outcome, out, static_cast<std::size_t>(options.interval)));
+  summary["fig11"] = bench::fig11_points(summary["cells"]);
+  summary["floor_plan"] = bench::floor_plan_json(scenes.at(options.scene), options.scene);
   bench::write_summary(out, summary);
 
   std::string chart_note = options.no_plot ? fmt::format("charts not made (--no-plot); run: python3 {} {}",

@@ -76,6 +76,7 @@ public:
       } catch (const Error& error) {
         state_.status = error.what();  // shown in the View panel; the viewer goes on
         log_warning("view: {}", error.what());
+        adopt_session_options();  // a loop that failed to build went back to the settings before
       }
       show_picture();
       ui_.end_frame(kPanelWidth);
@@ -216,18 +217,21 @@ private:
     try {
       session_.set_options(scaled_options());
     } catch (const Error&) {
-      if (strict) throw;
-      const RenderOptions in_use = session_.options();
-      const int width = state_.options.width, height = state_.options.height;
-      state_.options = in_use;
-      state_.options.width = width;
-      state_.options.height = height;
+      if (!strict) adopt_session_options();
       throw;
     }
     if (state_.light_stays != session_.fixed_light().has_value())
       session_.set_fixed_light(state_.light_stays
                                    ? std::optional<vec3>(session_.walkthrough_state(current_frame()).light_position)
                                    : std::nullopt);
+  }
+
+  // The panels show the settings the session renders with (its size is the scaled one).
+  void adopt_session_options() {
+    const int width = state_.options.width, height = state_.options.height;
+    state_.options = session_.options();
+    state_.options.width = width;
+    state_.options.height = height;
   }
 
   void render_if_needed(bool strict) {

@@ -144,6 +144,47 @@ void quality_section(std::string& text, const nlohmann::json& summary, const std
   chart(text, out, table.figure, table.title);
 }
 
+// Fig. 11: a point per structure, rebuild time against render time (app/bench/fig11_points.h).
+void fig11_section(std::string& text, const nlohmann::json& summary, const std::filesystem::path& out) {
+  if (!summary.contains("fig11") || summary["fig11"].empty()) return;
+  text += "### Fig. 11: rebuild time against render time per structure\n\n"
+          "Paper (OptiX's guidance, confirmed by its runs): the KD-tree is the slowest to rebuild and the fastest to "
+          "render, Lbvh the fastest to rebuild and the slowest to render. Render: mean frame time of the static "
+          "full-scene cell; rebuild: mean structure update per frame of the deforming cell rebuilt every frame; "
+          "build: the whole structure built once (every BLAS and the TLAS).\n\n"
+          "| structure | render ms | render cell | rebuild ms | rebuild cell | build ms |\n"
+          "|---|---:|---|---:|---|---:|\n";
+  for (const nlohmann::json& point : summary["fig11"])
+    text += fmt::format("| {} | {} | `{}` | {} | {} | {} |\n", point["structure"].get<std::string>(),
+                        number(point["render_ms"]), point["render_cell"].get<std::string>(),
+                        number(point["rebuild_ms"], "{:.3f}"),
+                        point["rebuild_cell"].is_string() ? fmt::format("`{}`", point["rebuild_cell"].get<std::string>())
+                                                          : std::string("-"),
+                        number(point["build_ms"], "{:.1f}"));
+  text += "\n";
+  chart(text, out, "fig11", "Fig. 11");
+}
+
+// Fig. 4: the floor plan with the camera path (app/bench/floor_plan.h).
+void fig4_section(std::string& text, const nlohmann::json& summary, const std::filesystem::path& out) {
+  if (!summary.contains("floor_plan")) return;
+  const nlohmann::json& plan = summary["floor_plan"];
+  text += fmt::format("## Fig. 4: floor plan of {} with the camera path\n\n", plan["scene"].get<std::string>());
+  text += fmt::format(
+      "Seen from above (x across, z down the page), what stands between heights {:.2f} and {:.2f} (walking "
+      "height) in cells of {:.2f}; the deforming meshes marked apart; the camera path and the light's path "
+      "sampled every {} frames; the camera at the quality tables' frames:\n\n",
+      plan["grid"]["slab"][0].get<double>(), plan["grid"]["slab"][1].get<double>(), plan["grid"]["cell"].get<double>(),
+      plan["path_step"].get<int>());
+  text += "| frame | camera (x, z) | looking at (x, z) |\n|---:|---|---|\n";
+  for (const nlohmann::json& mark : plan["marked_frames"])
+    text += fmt::format("| {} | {:.2f}, {:.2f} | {:.2f}, {:.2f} |\n", mark["frame"].get<int>(),
+                        mark["camera"][0].get<double>(), mark["camera"][1].get<double>(),
+                        mark["target"][0].get<double>(), mark["target"][1].get<double>());
+  text += "\n";
+  chart(text, out, "fig4", "Fig. 4: floor plan and camera path");
+}
+
 std::string cuda_text(const nlohmann::json& environment) {
   std::string text;
   for (const nlohmann::json& device : environment["cuda_devices"]) {
@@ -207,6 +248,7 @@ std::string bench_report_markdown(const nlohmann::json& summary, const std::file
       "paper's numbers (GTX 780 Ti, OptiX 3/4, 1280x720, 4900 frames) are quoted beside each figure. Raw "
       "per-frame rows are in `cells/<cell>.csv`, every number of this page in `summary.json`.\n\n";
   setup_section(text, summary, extras);
+  fig4_section(text, summary, out);
 
   text += "## Cells\n\n| cell | status | frames | mean ms | median | p95 |\n|---|---|---:|---:|---:|---:|\n";
   for (const nlohmann::json& cell : summary["cells"]) {
@@ -222,7 +264,11 @@ std::string bench_report_markdown(const nlohmann::json& summary, const std::file
   text += "\n";
 
   text += "## Frame times\n\n";
-  for (const FigureText& figure : kFigures) frame_time_section(text, summary, out, figure);
+  for (const FigureText& figure : kFigures) {
+    // Fig. 11 sums up Figs. 5-10 per structure; the paper puts it before Fig. 12.
+    if (std::string(figure.figure) == "fig12") fig11_section(text, summary, out);
+    frame_time_section(text, summary, out, figure);
+  }
   text += "## Image quality\n\n";
   text +=
       "Colour buckets are the paper's measure (sums of each channel compared with the reference's; blind to where "
