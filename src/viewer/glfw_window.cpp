@@ -62,6 +62,7 @@ GlfwWindow::~GlfwWindow() {
 
 bool GlfwWindow::close_requested() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void GlfwWindow::poll_events() { glfwPollEvents(); }
+void GlfwWindow::wait_events(double seconds) { glfwWaitEventsTimeout(seconds); }
 void GlfwWindow::swap_buffers() { glfwSwapBuffers(window_); }
 
 int GlfwWindow::framebuffer_width() const {

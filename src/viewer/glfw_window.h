@@ -20,6 +20,8 @@ public:
   GLFWwindow* handle() const { return window_; }
   bool close_requested() const;
   void poll_events();
+  // Waits for an event, `seconds` at most (an idle viewer then leaves the CPU to others).
+  void wait_events(double seconds);
   void swap_buffers();
   int framebuffer_width() const;
   int framebuffer_height() const;

@@ -56,7 +56,10 @@ public:
         log_warning("view: interrupted by {}", interruption_signal_name());
         return interrupted_exit_code();
       }
-      window_.poll_events();
+      // Nothing moves on its own: wait for input (a twentieth of a second at most, so that signals
+      // and the script's waits are still seen) instead of redrawing the panels as fast as possible.
+      if (state_.continuous || state_.playing || state_.flying) window_.poll_events();
+      else window_.wait_events(0.05);
       if (window_.close_requested()) return 0;
       const Clock::time_point now = Clock::now();
       const float seconds = std::chrono::duration<float>(now - last).count();
