@@ -248,7 +248,11 @@ private:
       const Clock::time_point now = Clock::now();
       stats_.add(measured, last_render_ ? std::chrono::duration<double, std::milli>(now - *last_render_).count() : 0.0);
       last_render_ = now;
-      images_ = FrameImages{std::move(*measured.final_image), {}, std::nullopt};
+      // A re-render of the same view (render continuously) keeps its difference: the reference
+      // builds a loop of its own, too slow to make every frame.
+      std::optional<DifferenceFromRt> difference;
+      if (!changed) difference = std::move(images_.difference);
+      images_ = FrameImages{std::move(*measured.final_image), {}, std::move(difference)};
       rendered_ = Rendered{view, session_.options(), session_.fixed_light()};
       views_read_ = false;
       if (state_.flying) recorder_.sample(*view.camera);
