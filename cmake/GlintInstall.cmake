@@ -16,11 +16,13 @@ endif()
 install(TARGETS ${GLINT_EXPORTED_TARGETS} EXPORT glintTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
 
-# Headers: accel/ without the Embree wrappers, the two core/ headers accel/ includes, and with CUDA
-# the src/cuda/ headers of glint_accel_cuda (not those of the files that stay in glint).
+# Headers: accel/ without the Embree wrappers, the core/ headers accel/ and cuda/ include, and with
+# CUDA the src/cuda/ headers of glint_accel_cuda (not those of the files that stay in glint).
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/src/accel/ DESTINATION include/glint/accel COMPONENT development
         FILES_MATCHING PATTERN "*.h" PATTERN "embree_*" EXCLUDE)
-install(FILES ${CMAKE_SOURCE_DIR}/src/core/error.h ${CMAKE_SOURCE_DIR}/src/core/math.h
+install(FILES ${CMAKE_SOURCE_DIR}/src/core/error.h ${CMAKE_SOURCE_DIR}/src/core/error_type.h
+              ${CMAKE_SOURCE_DIR}/src/core/enum_names.h ${CMAKE_SOURCE_DIR}/src/core/stopwatch.h
+              ${CMAKE_SOURCE_DIR}/src/core/math.h
         DESTINATION include/glint/core COMPONENT development)
 if(GLINT_HAVE_CUDA)
   file(GLOB _glint_cuda_headers CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/cuda/*.h ${CMAKE_SOURCE_DIR}/src/cuda/*.cuh)

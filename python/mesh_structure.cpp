@@ -1,5 +1,6 @@
 #include "python/mesh_structure.h"
 
+#include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
 
@@ -45,13 +46,13 @@ MeshStructure::MeshStructure(std::vector<vec3> positions, std::vector<uint32_t> 
     fail("{}: unknown backend \"{}\" (known: {})", kSource, backend, fmt::join(kStructureBackends, ", "));
   rt::AccelOptions options;
   options.builder = accel::parse_bvh_builder(builder);
-  if ((backend == "embree" || backend == "optix") && options.builder != accel::BvhBuilder::sah)
+  if (!backends::find_backend(backend).takes_glint_builders && options.builder != accel::BvhBuilder::sah)
     fail("{}: builder=\"{}\" applies to the cpu and cuda backends; the {} backend builds its own structures",
          kSource, builder, backend);
   scene_.validate();
-  rt::check_backend_built(backend);
-  if (rt::is_gpu_backend(backend)) require_cuda_gpu(fmt::format("{}(backend=\"{}\")", kSource, backend).c_str());
-  tracer_ = rt::make_ray_tracer(backend);
+  backends::check_backend_built(backend);
+  if (backends::is_gpu_backend(backend)) require_cuda_gpu(fmt::format("{}(backend=\"{}\")", kSource, backend).c_str());
+  tracer_ = backends::make_ray_tracer(backend);
   tracer_->build(scene_, options);
 }
 

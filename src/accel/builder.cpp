@@ -16,30 +16,6 @@
 
 namespace glint::accel {
 
-std::string_view builder_name(BvhBuilder builder) {
-  switch (builder) {
-    case BvhBuilder::none: return "none";
-    case BvhBuilder::median: return "median";
-    case BvhBuilder::sah: return "sah";
-    case BvhBuilder::sbvh: return "sbvh";
-    case BvhBuilder::lbvh: return "lbvh";
-    case BvhBuilder::trbvh: return "trbvh";
-    case BvhBuilder::ploc: return "ploc";
-  }
-  return "unknown";
-}
-
-BvhBuilder parse_bvh_builder(std::string_view name) {
-  for (BvhBuilder builder : kAllBvhBuilders)
-    if (builder_name(builder) == name) return builder;
-  std::string known;
-  for (BvhBuilder builder : kAllBvhBuilders) {
-    if (!known.empty()) known += ", ";
-    known += builder_name(builder);
-  }
-  fail("accel: unknown BVH builder '{}' (known: {})", name, known);
-}
-
 Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
   switch (builder) {
     case BvhBuilder::none: return build_none(input, options);

@@ -3,6 +3,7 @@
 #include "accel/build_options.h"
 #include "accel/bvh.h"
 #include "accel/triangle_mesh.h"
+#include "core/enum_names.h"
 
 #include <span>
 #include <string_view>
@@ -11,13 +12,16 @@ namespace glint::accel {
 
 enum class BvhBuilder { none, median, sah, sbvh, lbvh, trbvh, ploc };
 
-inline constexpr BvhBuilder kAllBvhBuilders[] = {BvhBuilder::none, BvhBuilder::median, BvhBuilder::sah,
-                                                 BvhBuilder::sbvh, BvhBuilder::lbvh,   BvhBuilder::trbvh,
-                                                 BvhBuilder::ploc};
+inline constexpr EnumNames<BvhBuilder, 7> kBvhBuilderNames{
+    "BVH builder",
+    {{BvhBuilder::none, "none"}, {BvhBuilder::median, "median"}, {BvhBuilder::sah, "sah"}, {BvhBuilder::sbvh, "sbvh"},
+     {BvhBuilder::lbvh, "lbvh"}, {BvhBuilder::trbvh, "trbvh"}, {BvhBuilder::ploc, "ploc"}}};
 
-std::string_view builder_name(BvhBuilder builder);
+inline constexpr auto kAllBvhBuilders = kBvhBuilderNames.values();
+
+inline std::string_view builder_name(BvhBuilder builder) { return kBvhBuilderNames.name_of(builder); }
 // Inverse of builder_name; glint::Error listing the known names otherwise.
-BvhBuilder parse_bvh_builder(std::string_view name);
+inline BvhBuilder parse_bvh_builder(std::string_view name) { return kBvhBuilderNames.parse(name); }
 
 // sbvh from boxes alone clips references as boxes (no triangle geometry to clip).
 Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options = {});

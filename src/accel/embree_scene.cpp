@@ -1,17 +1,13 @@
 #include "accel/embree_scene.h"
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 
-#include <chrono>
 #include <cstring>
 #include <numeric>
 
 namespace glint::accel {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 RTCBuildQuality build_quality(EmbreeQuality quality) {
   switch (quality) {
@@ -25,25 +21,9 @@ RTCBuildQuality build_quality(EmbreeQuality quality) {
 
 }  // namespace
 
-std::string_view embree_quality_name(EmbreeQuality quality) {
-  switch (quality) {
-    case EmbreeQuality::low: return "low";
-    case EmbreeQuality::medium: return "medium";
-    case EmbreeQuality::high: return "high";
-    case EmbreeQuality::refit: return "refit";
-  }
-  return "?";
-}
-
-EmbreeQuality parse_embree_quality(std::string_view name) {
-  for (EmbreeQuality quality : kAllEmbreeQualities)
-    if (embree_quality_name(quality) == name) return quality;
-  fail("embree: unknown build quality \"{}\" (known: low, medium, high, refit)", name);
-}
-
 EmbreeScene::EmbreeScene(const EmbreeDevice& device, const TriangleMesh& mesh, EmbreeQuality quality)
     : device_(device), quality_(quality), triangle_count_(mesh.triangle_count) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const int64_t bytes_before = device.allocated_bytes();
   const bool indexed = mesh.indices != nullptr;
   vertex_count_ = indexed ? mesh.vertex_count : 3 * mesh.triangle_count;
@@ -86,7 +66,7 @@ EmbreeScene::EmbreeScene(const EmbreeDevice& device, const TriangleMesh& mesh, E
   rtcCommitScene(scene_);
   device.check("rtcCommitScene");
   build_bytes_ = device.allocated_bytes() - bytes_before;
-  build_ms_ = ms_since(start);
+  build_ms_ = watch.elapsed_ms();
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -97,7 +77,7 @@ EmbreeScene::~EmbreeScene() {
 void EmbreeScene::update_vertices(std::span<const vec3> positions) {
   if (positions.size() != vertex_count_)
     fail("embree: update with {} vertices for a geometry of {}", positions.size(), vertex_count_);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   if (geometry_ != nullptr) {
     std::memcpy(vertices_, positions.data(), sizeof(vec3) * vertex_count_);
     rtcUpdateGeometryBuffer(geometry_, RTC_BUFFER_TYPE_VERTEX, 0);
@@ -105,7 +85,7 @@ void EmbreeScene::update_vertices(std::span<const vec3> positions) {
     rtcCommitScene(scene_);
     device_.check("update vertices");
   }
-  update_ms_ = ms_since(start);
+  update_ms_ = watch.elapsed_ms();
 }
 
 Aabb EmbreeScene::bounds() const {

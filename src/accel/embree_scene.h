@@ -5,6 +5,7 @@
 #include "accel/embree_device.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
+#include "core/enum_names.h"
 
 #include <embree3/rtcore.h>
 
@@ -20,13 +21,16 @@ namespace glint::accel {
 // RTC_BUILD_QUALITY_REFIT): the first commit builds, every later commit after update_vertices refits.
 enum class EmbreeQuality { low, medium, high, refit };
 
-inline constexpr EmbreeQuality kAllEmbreeQualities[] = {EmbreeQuality::low, EmbreeQuality::medium,
-                                                        EmbreeQuality::high, EmbreeQuality::refit};
+inline constexpr EnumNames<EmbreeQuality, 4> kEmbreeQualityNames{
+    "Embree build quality",
+    {{EmbreeQuality::low, "low"}, {EmbreeQuality::medium, "medium"}, {EmbreeQuality::high, "high"},
+     {EmbreeQuality::refit, "refit"}}};
 
-// "low", "medium", "high", "refit".
-std::string_view embree_quality_name(EmbreeQuality quality);
+inline constexpr auto kAllEmbreeQualities = kEmbreeQualityNames.values();
+
+inline std::string_view embree_quality_name(EmbreeQuality quality) { return kEmbreeQualityNames.name_of(quality); }
 // Inverse of embree_quality_name; glint::Error listing the known names otherwise.
-EmbreeQuality parse_embree_quality(std::string_view name);
+inline EmbreeQuality parse_embree_quality(std::string_view name) { return kEmbreeQualityNames.parse(name); }
 
 class EmbreeScene {
 public:

@@ -114,7 +114,7 @@ void add_accel_bench_command(CLI::App& app, AccelBenchOptions& options) {
                     "(mirror reflections of the primary rays at surfaces with reflectivity > 0) or 'random' (uniform "
                     "origins in the scene box, uniform directions; width x height x frames of them)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"primary", "reflection", "random"}));
+      ->check(CLI::IsMember(accel_bench::kRayKindNames.names()));
   bench->add_option("--frames", options.frames, "Comma-separated walkthrough frames whose cameras shoot the rays")
       ->capture_default_str()
       ->check(validator_of(parse_frame_list, "FRAMES"));

@@ -12,6 +12,8 @@
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
 #include "app/bench/resume.h"
+#include "backends/registry.h"
+#include "backends/registry.h"
 #include "core/interruption.h"
 #include "app/output_folder.h"
 #include "core/atomic_file.h"
@@ -19,10 +21,14 @@
 #include "core/log.h"
 #include "core/progress_bar.h"
 #include "core/utc_timestamp.h"
+#include "render/raster_settings.h"
+#include "render/shadow_method.h"
+#include "rt/ray_tracer.h"
 #include "gl/egl_context.h"
 #include "scene/load_scene.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -192,11 +198,12 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                       "Simplified scene (Figs. 8, 9, 10, 12, Table II): atrium-simple or a scene file")
       ->capture_default_str();
   command->add_option("--backends", options.backends,
-                      "Ray tracing backends, comma-separated: cpu, embree, cuda, optix, gl (unavailable ones are "
-                      "reported as skipped)")
+                      "Ray tracing backends, comma-separated: " + fmt::format("{}", fmt::join(backends::backend_names(), ", ")) +
+                          " (unavailable ones are reported as skipped)")
       ->capture_default_str();
   command->add_option("--accels", options.accels,
-                      "Structures of the cpu, cuda and gl backends, comma-separated (embree and optix build their own)")
+                      "Structures of the " + backends::builder_backends_text() +
+                          " backends, comma-separated (the others build their own)")
       ->capture_default_str();
   command->add_option("--updates", options.updates, "Update policies of the deforming cells: rebuild, refit, auto")
       ->capture_default_str();
@@ -218,11 +225,11 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
       ->check(CLI::Range(16, 8192))
       ->capture_default_str();
   command->add_option("--gbuffer", options.gbuffer, "How the G-buffer is made: raster or visibility (as glint render)")
-      ->check(CLI::IsMember({"raster", "visibility"}))
+      ->check(CLI::IsMember(render::kGBufferMethodNames.names()))
       ->capture_default_str();
   command
       ->add_option("--shadows", options.shadows, "How the light's shadow is made: cube, rt or hybrid (as glint render)")
-      ->check(CLI::IsMember({"cube", "rt", "hybrid"}))
+      ->check(CLI::IsMember(render::kShadowMethodNames.names()))
       ->capture_default_str();
   command->add_flag("--quick", options.quick,
                     "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple (flags given "
@@ -239,11 +246,11 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
 int run_bench_command(const BenchOptions& given_options) {
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
-  std::vector<std::string> known_backends(std::begin(bench::kBenchBackends), std::end(bench::kBenchBackends));
+  const std::vector<std::string> known_backends = backends::backend_names();
   const std::vector<std::string> known_accels = rt::blas_structure_names();
   const std::vector<std::string> backends = parse_name_list("--backends", options.backends, known_backends);
   const std::vector<std::string> accels = parse_name_list("--accels", options.accels, known_accels);
-  const std::vector<std::string> updates = parse_name_list("--updates", options.updates, {"rebuild", "refit", "auto"});
+  const std::vector<std::string> updates = parse_name_list("--updates", options.updates, rt::kUpdatePolicyNames.names());
   const fs::path out = options.out;
   const nlohmann::json settings = run_settings(options);
   // Before anything is written: a folder holding another run's cells is not mixed with this one.

@@ -7,11 +7,13 @@
 #include "app/png_writer_thread.h"
 #include "app/render_run_record.h"
 #include "app/video_writer.h"
+#include "backends/registry.h"
 #include "core/csv_writer.h"
 #include "core/error.h"
 #include "core/interruption.h"
 #include "core/log.h"
 #include "core/progress_bar.h"
+#include "core/stopwatch.h"
 #include "cuda/device_query.h"
 #include "gl/egl_context.h"
 #include "accel/builder.h"
@@ -23,8 +25,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -34,12 +36,6 @@
 namespace glint {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 std::string builder_names() {
   std::string names;
   for (const std::string& name : rt::blas_structure_names()) {
@@ -47,6 +43,19 @@ std::string builder_names() {
     names += name;
   }
   return names;
+}
+
+// --accel's help for the backends with structures of their own: "; of the optix backend:
+// optix-fasttrace (the default there) or optix-fastbuild".
+std::string own_structures_help() {
+  std::string text;
+  for (const backends::Backend& backend : backends::all_backends()) {
+    if (backend.structures.empty()) continue;
+    text += fmt::format("; of the {} backend: {} (the default there)", backend.name, backend.structures.front());
+    for (std::size_t i = 1; i < backend.structures.size(); ++i)
+      text += (i + 1 == backend.structures.size() ? " or " : ", ") + backend.structures[i];
+  }
+  return text;
 }
 
 }  // namespace
@@ -66,18 +75,20 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
   settings.ray_tracing.backend = options.backend;
-  if (options.backend == "optix") {
-    // The default ("sah") means OptiX's default here: optix-fasttrace.
-    if (options.accel != "sah" && !rt::is_optix_accel_name(options.accel))
-      fail("--accel {} is one of glint's structures; the optix backend takes optix-fasttrace or optix-fastbuild",
-           options.accel);
-    if (options.accel != "sah") settings.ray_tracing.accel.optix_build = rt::parse_optix_accel(options.accel);
-  } else if (rt::is_optix_accel_name(options.accel)) {
-    fail("--accel {} is an OptiX structure: it needs --backend optix", options.accel);
+  const backends::Backend& backend = backends::find_backend(options.backend);
+  if (!backend.structures.empty()) {
+    // The default ("sah") means the backend's own default here (optix: optix-fasttrace).
+    if (options.accel != "sah" &&
+        std::find(backend.structures.begin(), backend.structures.end(), options.accel) == backend.structures.end())
+      fail("--accel {} is one of glint's structures; the {} backend takes {}", options.accel, backend.name,
+           fmt::join(backend.structures, " or "));
+    if (options.accel != "sah") settings.ray_tracing.accel.backend_structure = options.accel;
+  } else if (const backends::Backend* owner = backends::structure_owner(options.accel)) {
+    fail("--accel {} is a structure of the {} backend: it needs --backend {}", options.accel, owner->name, owner->name);
   } else {
-    if (options.backend == "embree" && options.accel != "sah")
-      fail("--accel {} applies to the cpu, cuda and gl backends; the embree backend builds its own structures",
-           options.accel);
+    if (!backend.takes_glint_builders && options.accel != "sah")
+      fail("--accel {} applies to the {} backends; the {} backend builds its own structures", options.accel,
+           backends::builder_backends_text(), backend.name);
     settings.ray_tracing.accel.set_structure(rt::parse_blas_structure(options.accel));
     if (options.backend == "gl" && settings.ray_tracing.accel.blas == rt::BlasKind::kdtree)
       fail("--accel kdtree applies to the cpu and cuda backends; the gl backend traces BVHs only");
@@ -85,17 +96,17 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
   // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
   // references cannot be refitted.
-  if (render::uses_ray_tracer(settings) && options.deform == "on" && options.backend != "embree" &&
+  if (render::uses_ray_tracer(settings) && options.deform == "on" && backend.takes_glint_builders &&
       !rt::blas_structure_refittable(settings.ray_tracing.accel.structure()) &&
       settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
     fail("--accel {} cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
          "or --deform off",
          options.accel, options.update);
   if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
-      !rt::is_gpu_backend(options.backend))
-    fail("--deform-on gpu needs --backend cuda or optix when rays are traced (reflections hybrid or rt, shadows rt or "
+      !backends::is_gpu_backend(options.backend))
+    fail("--deform-on gpu needs --backend {} when rays are traced (reflections hybrid or rt, shadows rt or "
          "hybrid, or primary rt; the {} backend builds from host vertices); use --deform-on cpu",
-         options.backend);
+         backends::gpu_backends_text(), options.backend);
   settings.validate();
   return settings;
 }
@@ -151,7 +162,7 @@ vec3 parse_point_flag(std::string_view flag, std::string_view text) {
 }
 
 bool deforms_on_gpu(const RenderOptions& options) {
-  return options.deform_on.empty() ? rt::is_gpu_backend(options.backend) : options.deform_on == "gpu";
+  return options.deform_on.empty() ? backends::is_gpu_backend(options.backend) : options.deform_on == "gpu";
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -162,21 +173,19 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_option("--reflections", options.reflections,
                       "Reflections: off (direct light only), ssr (screen space only), hybrid (SSR, rays where it "
                       "failed) or rt (rays for every reflective pixel: the reference)")
-      ->check(CLI::IsMember({"off", "ssr", "hybrid", "rt"}))
+      ->check(CLI::IsMember(render::kReflectionModeNames.names()))
       ->capture_default_str();
   command->add_option("--backend", options.backend,
-                      "Ray tracing backend for hybrid and rt reflections and --shadows rt|hybrid: cpu (glint's own "
-                      "structures on the CPU), embree, cuda (glint's own structures on the GPU; needs a CUDA GPU), "
-                      "optix (NVIDIA OptiX's; needs a build with OptiX, docs/optix.md) or gl (glint's own structures "
-                      "traced in OpenGL compute shaders, built on the CPU)")
-      ->check(CLI::IsMember({"cpu", "embree", "cuda", "optix", "gl"}))
+                      "Ray tracing backend for hybrid and rt reflections and --shadows rt|hybrid: " +
+                          backends::backends_help())
+      ->check(CLI::IsMember(backends::backend_names()))
       ->capture_default_str();
   command->add_option("--accel", options.accel,
-                      "Structure of the cpu, cuda and gl backends' per-mesh BVHs (kdtree: an SAH kd-tree, cpu and "
-                      "cuda only): " + builder_names() +
-                          "; of the optix backend: optix-fasttrace (the default there) or optix-fastbuild")
+                      "Structure of the " + backends::builder_backends_text() +
+                          " backends' per-mesh BVHs (kdtree: an SAH kd-tree, cpu and cuda only): " + builder_names() +
+                          own_structures_help())
       ->check([](const std::string& name) {
-        if (rt::is_optix_accel_name(name)) return std::string();
+        if (backends::structure_owner(name) != nullptr) return std::string();
         try {
           (void)rt::parse_blas_structure(name);
           return std::string();
@@ -188,7 +197,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_option("--update", options.update,
                       "How deforming meshes' structures follow them each frame: rebuild, refit, or auto (refit, "
                       "rebuild once the SAH cost drifted 30 % above the last build's)")
-      ->check(CLI::IsMember({"rebuild", "refit", "auto"}))
+      ->check(CLI::IsMember(rt::kUpdatePolicyNames.names()))
       ->capture_default_str();
   command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
   command->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -249,7 +258,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--tone-map", options.tone_map, "Tone map: aces, reinhard or none")
-      ->check(CLI::IsMember({"aces", "reinhard", "none"}))
+      ->check(CLI::IsMember(render::kToneMapNames.names()))
       ->capture_default_str();
   command->add_option("--shadow-map-size", options.shadow_map_size, "Shadow cube map face size in texels")
       ->check(CLI::Range(16, 8192))
@@ -258,27 +267,27 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->add_option("--shadow-cube-draw", options.shadow_cube_draw,
                    "How the shadow cube map's faces are drawn: per-face (six draws) or layered (one draw through a "
                    "geometry shader); same shadows, different speed (docs/perf.md)")
-      ->check(CLI::IsMember({"per-face", "layered"}))
+      ->check(CLI::IsMember(render::kShadowCubeDrawNames.names()))
       ->capture_default_str();
   command
       ->add_option("--gbuffer", options.gbuffer,
                    "How the G-buffer is made: raster (one draw that shades every image) or visibility (a draw of "
                    "triangle ids, then a compute pass rebuilds the images); same images (docs/render.md)")
-      ->check(CLI::IsMember({"raster", "visibility"}))
+      ->check(CLI::IsMember(render::kGBufferMethodNames.names()))
       ->capture_default_str();
   command
       ->add_option("--primary", options.primary,
                    "With --gbuffer visibility, how the triangle ids are made: raster (the id draw), rt (a camera "
                    "ray per pixel through the --backend tracer) or compute (a compute-shader rasteriser); "
                    "experiments (docs/render.md)")
-      ->check(CLI::IsMember({"raster", "rt", "compute"}))
+      ->check(CLI::IsMember(render::kPrimaryVisibilityNames.names()))
       ->capture_default_str();
   command
       ->add_option("--shadows", options.shadows,
                    "How the light's shadow is made: cube (the cube map, the paper's method), rt (a shadow ray per "
                    "lit pixel through --backend) or hybrid (the cube map at half --shadow-map-size, rays where it is "
                    "uncertain); docs/render.md")
-      ->check(CLI::IsMember({"cube", "rt", "hybrid"}))
+      ->check(CLI::IsMember(render::kShadowMethodNames.names()))
       ->capture_default_str();
   command->add_option("--ssr-max-steps", options.ssr_max_steps, "Most screen-space march steps per pixel")
       ->check(CLI::Range(1, 4096))
@@ -329,8 +338,8 @@ int run_render_command(const RenderOptions& options) {
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracer(settings)) {
-    rt::check_backend_built(options.backend);
-    if (rt::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+    backends::check_backend_built(options.backend);
+    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
@@ -359,7 +368,7 @@ int run_render_command(const RenderOptions& options) {
   if (images) png_writer.emplace();
 
   ProgressBar progress("render", frames.size());
-  const auto run_start = Clock::now();
+  const Stopwatch run_watch;
   // A frame that came back complete: its images go to the writer, its row to timings.csv.
   const auto keep = [&](FrameMeasurement& measured) {
     if (measured.final_image) {
@@ -391,7 +400,7 @@ int run_render_command(const RenderOptions& options) {
   std::optional<rt::RayTracerStats> tracer_stats;
   if (pipeline.ray_tracer() != nullptr) tracer_stats = pipeline.ray_tracer()->stats();
   if (interruption_requested()) record.mark_interrupted(interruption_signal_name());
-  record.write(out.path() / "run.json", milliseconds_since(run_start), tracer_stats);
+  record.write(out.path() / "run.json", run_watch.elapsed_ms(), tracer_stats);
   if (interruption_requested()) {
     log_warning("render: interrupted by {} after {} of {} frames; {} holds them, their timings and run.json",
               interruption_signal_name(), timings.row_count(), frames.size(), out.path().string());

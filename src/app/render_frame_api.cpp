@@ -2,6 +2,7 @@
 
 #include "app/frame_loop.h"
 #include "app/frame_selection.h"
+#include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
 #include "gl/egl_context.h"
@@ -30,8 +31,8 @@ ImageRgba8 render_frame(const RenderOptions& options, int frame) {
   const std::vector<int> frames = selection.resolve(WalkthroughAnimation(scene).frame_count());
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   if (render::uses_ray_tracer(settings)) {
-    rt::check_backend_built(options.backend);
-    if (rt::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+    backends::check_backend_built(options.backend);
+    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 

@@ -1,5 +1,6 @@
 #include "app/render_run_record.h"
 
+#include "backends/registry.h"
 #include "core/atomic_file.h"
 #include "core/untrusted_text.h"
 #include "core/utc_timestamp.h"
@@ -160,11 +161,21 @@ void RenderRunRecord::MemorySamples::add(std::optional<std::uint64_t> bytes) {
 
 void RenderRunRecord::mark_interrupted(const char* signal) { run_["interrupted_by"] = signal; }
 
+namespace {
+
+// The structure the tracer built: glint's builder, or the backend's own (its default when none was named).
+std::string recorded_structure(const render::RayTracingSettings& settings) {
+  const backends::Backend& backend = backends::find_backend(settings.backend);
+  if (!backend.structures.empty())
+    return settings.accel.backend_structure.empty() ? backend.structures.front() : settings.accel.backend_structure;
+  return std::string(accel::builder_name(settings.accel.builder));
+}
+
+}  // namespace
+
 void RenderRunRecord::set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats) {
   run_["ray_tracer"] = {{"backend", settings.backend},
-                        {"accel", std::string(settings.backend == "optix"
-                                                  ? rt::optix_accel_name(settings.accel.optix_build)
-                                                  : accel::builder_name(settings.accel.builder))},
+                        {"accel", recorded_structure(settings)},
                         {"update", std::string(rt::update_policy_name(settings.update))},
                         {"build_ms", stats.build_ms},
                         {"memory_bytes", stats.memory_bytes}};

@@ -67,7 +67,7 @@ private:
 class CudaRayTracer final : public rt::RayTracer, public rt::DeviceTracing {
 public:
   // make_cuda_ray_tracer checks for a GPU first (the members' CUDA stream and events need one).
-  CudaRayTracer() = default;
+  explicit CudaRayTracer(const CudaTracerOptions& tracer_options) : tracer_options_(tracer_options) {}
   // Work still queued uses the buffers, which go before the stream does.
   ~CudaRayTracer() override { cudaStreamSynchronize(stream_.get()); }
 
@@ -142,7 +142,7 @@ private:
   // zeroed before the launch.
   TraceLaunch trace_launch(const accel::Ray* rays, accel::Hit* hits, uint32_t* occluded, const uint32_t* ray_count,
                            uint32_t capacity, uint32_t* overflow) const {
-    TraceLaunch launch{rays, hits, ray_count, capacity, overflow, next_ray_.data(), options_.cuda_trace_kernel};
+    TraceLaunch launch{rays, hits, ray_count, capacity, overflow, next_ray_.data(), tracer_options_.trace_kernel};
     launch.occluded = occluded;
     return launch;
   }
@@ -159,6 +159,7 @@ private:
   // Every call enqueues here; non-blocking, so the legacy default stream does not order it.
   CudaStream stream_{cudaStreamNonBlocking};
   rt::AccelOptions options_;
+  CudaTracerOptions tracer_options_;
   rt::SceneShape shape_;
   std::vector<std::string> mesh_names_;
   std::vector<MeshState> meshes_;
@@ -560,9 +561,9 @@ rt::RayTracerStats CudaRayTracer::stats() const {
 
 }  // namespace
 
-std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer() {
+std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer(const CudaTracerOptions& options) {
   require_cuda_gpu("--backend cuda");
-  return std::make_unique<CudaRayTracer>();
+  return std::make_unique<CudaRayTracer>(options);
 }
 
 }  // namespace glint::cuda

@@ -15,12 +15,18 @@
 //
 // Plain C++ (no CUDA headers). A build without CUDA, or a machine without a CUDA GPU, gets one
 // glint::Error from make_cuda_ray_tracer().
+#include "cuda/trace_kernel.h"
 #include "rt/ray_tracer.h"
 
 #include <memory>
 
 namespace glint::cuda {
 
-std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer();
+// The cuda backend's own options (rt::AccelOptions holds what every backend of glint's builders takes).
+struct CudaTracerOptions {
+  TraceKernel trace_kernel = kDefaultTraceKernel;  // which closest-hit kernel traces the ray lists
+};
+
+std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer(const CudaTracerOptions& options = {});
 
 }  // namespace glint::cuda

@@ -6,7 +6,7 @@
 
 namespace glint::cuda {
 
-std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer() {
+std::unique_ptr<rt::RayTracer> make_cuda_ray_tracer(const CudaTracerOptions&) {
   fail("--backend cuda: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");
 }
 

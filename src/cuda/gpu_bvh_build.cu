@@ -31,7 +31,7 @@ GpuBvhBuilder GpuBvhBuild::builder() const { return builder_; }
 void GpuBvhBuild::build(const Aabb* prim_boxes, uint32_t count, GpuBvh& out, cudaStream_t stream) {
   // Below 2^31 primitives: node counts (2 count - 1) fit 32 bits, and the LBVH depth bound holds.
   if (count >= (uint32_t{1} << 31))
-    fail_message(std::string("GpuBvhBuild (") + gpu_builder_name(builder_) + "): " + std::to_string(count) +
+    fail_message(std::string("GpuBvhBuild (") + std::string(gpu_builder_name(builder_)) + "): " + std::to_string(count) +
                  " primitives, at most 2^31 - 1");
   out.refittable = true;
   if (count == 0) {

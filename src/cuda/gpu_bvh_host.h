@@ -5,6 +5,7 @@
 #include "accel/build_options.h"
 #include "accel/bvh.h"
 #include "accel/triangle_mesh.h"
+#include "core/enum_names.h"
 
 #include <cstdint>
 #include <memory>
@@ -17,12 +18,15 @@ enum class GpuBvhBuilder {
   ploc,  // Meister & Bittner 2018: parallel locally-ordered clustering in Morton order
 };
 
-inline constexpr GpuBvhBuilder kAllGpuBvhBuilders[] = {GpuBvhBuilder::lbvh, GpuBvhBuilder::ploc};
+inline constexpr EnumNames<GpuBvhBuilder, 2> kGpuBvhBuilderNames{
+    "GPU BVH builder", {{GpuBvhBuilder::lbvh, "lbvh"}, {GpuBvhBuilder::ploc, "ploc"}}};
+
+inline constexpr auto kAllGpuBvhBuilders = kGpuBvhBuilderNames.values();
 
 // "lbvh", "ploc".
-const char* gpu_builder_name(GpuBvhBuilder builder);
+inline std::string_view gpu_builder_name(GpuBvhBuilder builder) { return kGpuBvhBuilderNames.name_of(builder); }
 // Inverse of gpu_builder_name; glint::Error listing the known names otherwise.
-GpuBvhBuilder parse_gpu_builder(std::string_view name);
+inline GpuBvhBuilder parse_gpu_builder(std::string_view name) { return kGpuBvhBuilderNames.parse(name); }
 
 // A GPU builder with its mesh, boxes, scratch and output kept on the GPU between calls, so repeated
 // builds and refits allocate nothing once the sizes were seen (what a per-frame rebuild does).

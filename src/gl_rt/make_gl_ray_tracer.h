@@ -1,5 +1,5 @@
 #pragma once
-// The gl backend's factory, declared without GL so that rt/ray_tracer.cpp (make_ray_tracer("gl"))
+// The gl backend's factory, declared without GL so that backends/registry.cpp (make_ray_tracer("gl"))
 // stays free of GL headers.
 #include "rt/ray_tracer.h"
 

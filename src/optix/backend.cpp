@@ -1,6 +1,8 @@
 #include "optix/backend.h"
+#include "optix/build_preference.h"
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "cuda/cuda_stream_events.h"
 #include "cuda/gpu_time_ring.h"
 #include "optix/result_check.h"
@@ -13,16 +15,11 @@
 #include "rt/scene_shape.h"
 
 #include <algorithm>
-#include <chrono>
 #include <mutex>
 #include <vector>
 
 namespace glint::optix {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 struct MeshStructure {
   TriangleGas gas;
@@ -30,8 +27,8 @@ struct MeshStructure {
 };
 
 // The IAS follows the GAS preference; it is rebuilt, never updated or compacted.
-unsigned int ias_build_flags(rt::OptixBuildPreference preference) {
-  return preference == rt::OptixBuildPreference::fast_trace ? OPTIX_BUILD_FLAG_PREFER_FAST_TRACE
+unsigned int ias_build_flags(BuildPreference preference) {
+  return preference == BuildPreference::fast_trace ? OPTIX_BUILD_FLAG_PREFER_FAST_TRACE
                                                             : OPTIX_BUILD_FLAG_PREFER_FAST_BUILD;
 }
 
@@ -45,7 +42,7 @@ struct OptixRayTracer::State {
   cuda::GpuTimeRing timed{"rt optix"};
   std::optional<rt::GpuTicket> last_update;
 
-  rt::OptixBuildPreference preference = rt::OptixBuildPreference::fast_trace;
+  BuildPreference preference = BuildPreference::fast_trace;
   std::vector<MeshStructure> meshes;
   std::vector<std::uint32_t> instance_meshes;
   std::vector<OptixInstance> instances;
@@ -111,12 +108,12 @@ OptixRayTracer::~OptixRayTracer() {
 void OptixRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   scene.validate();
   State& s = *state_;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const cudaStream_t stream = s.stream.get();
   const OptixDeviceContext context = s.context.get();
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));  // nothing in flight may use the old structures
   s.built = false;
-  s.preference = options.optix_build;
+  s.preference = build_preference_of(options.backend_structure);
   s.shape = rt::scene_shape(scene);
   s.meshes.clear();
   s.meshes.resize(scene.meshes.size());
@@ -139,7 +136,7 @@ void OptixRayTracer::build(const Scene& scene, const rt::AccelOptions& options) 
   s.scratch.resize(std::max(scratch_bytes, s.scratch.size()));
 
   // Static meshes are compacted (fast trace only); deformable ones are built ready to be updated.
-  const bool compact = s.preference == rt::OptixBuildPreference::fast_trace;
+  const bool compact = s.preference == BuildPreference::fast_trace;
   cuda::DeviceBuffer<std::uint64_t> compacted_sizes(s.meshes.size());
   for (std::size_t m = 0; m < s.meshes.size(); ++m) {
     MeshStructure& mesh = s.meshes[m];
@@ -164,7 +161,7 @@ void OptixRayTracer::build(const Scene& scene, const rt::AccelOptions& options) 
   }
   s.ias.build(context, s.instances, ias_build_flags(s.preference), s.scratch, stream);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
-  s.build_ms = ms_since(start);
+  s.build_ms = watch.elapsed_ms();
   s.last_update.reset();
   s.rebuilds = s.refits = 0;
   s.built = true;

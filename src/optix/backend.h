@@ -4,13 +4,13 @@
 // measured against. One GAS per mesh (built over the mesh's own index buffer) and one IAS over the
 // scene's instances; the closest-hit and occlusion queries run the device programs of src/optix/device/.
 //
-// Builder choice: AccelOptions::optix_build (optix-fasttrace: PREFER_FAST_TRACE, static GASes
-// compacted; optix-fastbuild: PREFER_FAST_BUILD). update() with refit or auto updates the
+// Builder choice: AccelOptions::backend_structure, named in optix/build_preference.h (optix-fasttrace,
+// the default: PREFER_FAST_TRACE, static GASes compacted; optix-fastbuild: PREFER_FAST_BUILD). update() with refit or auto updates the
 // deformable meshes' GASes in place (OPTIX_BUILD_OPERATION_UPDATE; OptiX reports no quality measure,
 // so auto never decides to rebuild), with rebuild builds them again; the IAS is rebuilt every
 // update. Deformable meshes' GASes are never compacted (that needs a host wait per rebuild).
 //
-// Plain C++ (no OptiX or CUDA headers); built only with GLINT_HAVE_OPTIX (make_ray_tracer("optix")).
+// Plain C++ (no OptiX or CUDA headers); built only with GLINT_HAVE_OPTIX (backends/registry.cpp makes it).
 #include "rt/ray_tracer.h"
 
 #include <memory>

@@ -1,21 +1,17 @@
 #include "optix/mesh_tracer.h"
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "cuda/cuda_stream_events.h"
 #include "optix/device_context.h"
 #include "optix/host_trace.h"
 #include "optix/trace_pipeline.h"
 #include "optix/triangle_gas.h"
 
-#include <chrono>
 #include <span>
 
 namespace glint::optix {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::span<const vec3> mesh_positions(const accel::TriangleMesh& mesh) {
   const std::size_t count = mesh.indices ? mesh.vertex_count : 3 * static_cast<std::size_t>(mesh.triangle_count);
@@ -30,12 +26,12 @@ std::span<const std::uint32_t> mesh_indices(const accel::TriangleMesh& mesh) {
 }  // namespace
 
 struct OptixMeshTracer::State {
-  explicit State(rt::OptixBuildPreference build_preference) : preference(build_preference) {}
+  explicit State(BuildPreference build_preference) : preference(build_preference) {}
 
   DeviceContext context;
   TraceClosestPipeline pipeline{context.get(), context.validation()};
   cuda::CudaStream stream;
-  rt::OptixBuildPreference preference;
+  BuildPreference preference;
   TriangleGas gas;
   cuda::DeviceBuffer<std::byte> scratch;
   cuda::DeviceBuffer<std::uint64_t> compacted_size{1};
@@ -43,7 +39,7 @@ struct OptixMeshTracer::State {
   bool built = false;
 };
 
-OptixMeshTracer::OptixMeshTracer(rt::OptixBuildPreference preference)
+OptixMeshTracer::OptixMeshTracer(BuildPreference preference)
     : state_(std::make_unique<State>(preference)) {}
 
 OptixMeshTracer::~OptixMeshTracer() {
@@ -55,8 +51,8 @@ double OptixMeshTracer::build(const accel::TriangleMesh& mesh) {
   GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
   s.built = false;
   s.gas.set_geometry(mesh_positions(mesh), mesh_indices(mesh));
-  const bool compact = s.preference == rt::OptixBuildPreference::fast_trace;
-  const auto start = std::chrono::steady_clock::now();
+  const bool compact = s.preference == BuildPreference::fast_trace;
+  const Stopwatch watch;
   s.gas.build(s.context.get(), gas_build_flags(s.preference, compact, false), s.scratch, s.stream.get(),
               compact ? s.compacted_size.data() : nullptr);
   if (compact) {
@@ -65,7 +61,7 @@ double OptixMeshTracer::build(const accel::TriangleMesh& mesh) {
   }
   GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
   s.built = true;
-  return ms_since(start);
+  return watch.elapsed_ms();
 }
 
 double OptixMeshTracer::refit(const accel::TriangleMesh& mesh) {
@@ -76,10 +72,10 @@ double OptixMeshTracer::refit(const accel::TriangleMesh& mesh) {
   s.gas.upload_positions(mesh_positions(mesh), s.stream.get());
   if (!s.gas.updatable()) s.gas.build(s.context.get(), gas_build_flags(s.preference, false, true), s.scratch, s.stream.get());
   GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   s.gas.update(s.context.get(), s.scratch, s.stream.get());
   GLINT_CUDA_CHECK(cudaStreamSynchronize(s.stream.get()));
-  return ms_since(start);
+  return watch.elapsed_ms();
 }
 
 double OptixMeshTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {

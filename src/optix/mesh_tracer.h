@@ -8,7 +8,7 @@
 // Plain C++ (no OptiX or CUDA headers); built only with GLINT_HAVE_OPTIX.
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
-#include "rt/gas_build_preference.h"
+#include "optix/build_preference.h"
 
 #include <cstddef>
 #include <memory>
@@ -19,7 +19,7 @@ namespace glint::optix {
 class OptixMeshTracer {
 public:
   // Creates the OptiX context and pipeline; glint::Error (one line) without a GPU or a usable OptiX.
-  explicit OptixMeshTracer(rt::OptixBuildPreference preference);
+  explicit OptixMeshTracer(BuildPreference preference);
   ~OptixMeshTracer();
   OptixMeshTracer(const OptixMeshTracer&) = delete;
   OptixMeshTracer& operator=(const OptixMeshTracer&) = delete;

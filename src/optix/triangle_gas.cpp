@@ -22,10 +22,10 @@ void ensure_scratch(cuda::DeviceBuffer<std::byte>& scratch, std::size_t bytes) {
 
 }  // namespace
 
-unsigned int gas_build_flags(rt::OptixBuildPreference preference, bool compact, bool allow_update) {
-  unsigned int flags = preference == rt::OptixBuildPreference::fast_trace ? OPTIX_BUILD_FLAG_PREFER_FAST_TRACE
+unsigned int gas_build_flags(BuildPreference preference, bool compact, bool allow_update) {
+  unsigned int flags = preference == BuildPreference::fast_trace ? OPTIX_BUILD_FLAG_PREFER_FAST_TRACE
                                                                           : OPTIX_BUILD_FLAG_PREFER_FAST_BUILD;
-  if (compact && preference == rt::OptixBuildPreference::fast_trace) flags |= OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
+  if (compact && preference == BuildPreference::fast_trace) flags |= OPTIX_BUILD_FLAG_ALLOW_COMPACTION;
   if (allow_update) flags |= OPTIX_BUILD_FLAG_ALLOW_UPDATE;
   return flags;
 }

@@ -5,7 +5,7 @@
 // and updating it every frame allocate nothing. Needs the OptiX and CUDA headers.
 #include "core/math.h"
 #include "cuda/device_buffer.h"
-#include "rt/gas_build_preference.h"
+#include "optix/build_preference.h"
 
 #include <cuda_runtime.h>
 #include <optix_types.h>
@@ -19,7 +19,7 @@ namespace glint::optix {
 // The build flags of a GAS: the preference (fast trace or fast build), compaction (fast trace only,
 // for GASes never rebuilt: compacting needs the host to wait for the compacted size) and
 // ALLOW_UPDATE for GASes that will be updated in place.
-unsigned int gas_build_flags(rt::OptixBuildPreference preference, bool compact, bool allow_update);
+unsigned int gas_build_flags(BuildPreference preference, bool compact, bool allow_update);
 
 class TriangleGas {
 public:

@@ -1,13 +1,13 @@
 #include "render/frame_pipeline.h"
 
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "gl/gl_check.h"
 #include "render/debug_views.h"
 #include "render/render_targets.h"
 #include "render/texture_readback.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 
 namespace glint::render {
@@ -38,9 +38,6 @@ RasterSettings raster_settings(const FramePipelineSettings& settings) {
   return raster;
 }
 
-double milliseconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The part of a reflection image where the failure mask is `keep` (1: traced, 0: SSR), the rest 0.
 ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float keep) {
@@ -91,18 +88,18 @@ void FramePipeline::upload_meshes(std::span<const std::uint32_t> dirty_meshes) {
 
 double FramePipeline::update_ray_tracer(std::span<const std::uint32_t> dirty_meshes) {
   if (!tracer_ || dirty_meshes.empty()) return 0.0;
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   tracer_->update(*scene_, dirty_meshes, settings_.ray_tracing.update);
-  return milliseconds_since(start);
+  return watch.elapsed_ms();
 }
 
 double FramePipeline::update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes) {
   if (!tracer_ || dirty_meshes.empty()) return 0.0;
   rt::DeviceTracing* device = tracer_->device_tracing();
   if (device == nullptr) fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   device->update_device(dirty_meshes, settings_.ray_tracing.update);
-  return milliseconds_since(start);
+  return watch.elapsed_ms();
 }
 
 GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection() : own_reflection_.id(); }

@@ -1,6 +1,8 @@
 #pragma once
 // Tunables of the raster passes. Shadow sizes are in cube-map texels at the receiver's distance, so
 // they scale with distance from the light and with shadow_map_size (docs/render.md explains them).
+#include "core/enum_names.h"
+
 #include <string_view>
 
 namespace glint::render {
@@ -12,9 +14,12 @@ namespace glint::render {
 // scene six times (docs/perf.md, "Shadow cube map").
 enum class ShadowCubeDraw { per_face, layered };
 
+inline constexpr EnumNames<ShadowCubeDraw, 2> kShadowCubeDrawNames{
+    "shadow cube draw", {{ShadowCubeDraw::per_face, "per-face"}, {ShadowCubeDraw::layered, "layered"}}};
+
 // "per-face", "layered"; parse_shadow_cube_draw is the inverse (glint::Error naming the known ones).
-std::string_view shadow_cube_draw_name(ShadowCubeDraw draw);
-ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
+inline std::string_view shadow_cube_draw_name(ShadowCubeDraw draw) { return kShadowCubeDrawNames.name_of(draw); }
+inline ShadowCubeDraw parse_shadow_cube_draw(std::string_view name) { return kShadowCubeDrawNames.parse(name); }
 
 // How the G-buffer is made (both give the same images; tests/render/visibility_gbuffer_test.cpp):
 //   raster      one draw whose fragment shader interpolates, samples textures and writes every image
@@ -25,9 +30,12 @@ ShadowCubeDraw parse_shadow_cube_draw(std::string_view name);
 // 1280x720), 40 against 64 ms on llvmpipe (atrium-simple, 320x180); docs/perf.md, "GPU-first frame".
 enum class GBufferMethod { raster, visibility };
 
+inline constexpr EnumNames<GBufferMethod, 2> kGBufferMethodNames{
+    "G-buffer method", {{GBufferMethod::raster, "raster"}, {GBufferMethod::visibility, "visibility"}}};
+
 // "raster", "visibility"; parse_gbuffer_method is the inverse (glint::Error naming the known ones).
-std::string_view gbuffer_method_name(GBufferMethod method);
-GBufferMethod parse_gbuffer_method(std::string_view name);
+inline std::string_view gbuffer_method_name(GBufferMethod method) { return kGBufferMethodNames.name_of(method); }
+inline GBufferMethod parse_gbuffer_method(std::string_view name) { return kGBufferMethodNames.parse(name); }
 
 // How the visibility G-buffer's ids are made (only with GBufferMethod::visibility):
 //   raster  VisibilityIdPass draws every instance
@@ -41,9 +49,15 @@ GBufferMethod parse_gbuffer_method(std::string_view name);
 //           "Compute-rasterised primary visibility")
 enum class PrimaryVisibility { raster, rt, compute };
 
+inline constexpr EnumNames<PrimaryVisibility, 3> kPrimaryVisibilityNames{
+    "primary visibility",
+    {{PrimaryVisibility::raster, "raster"}, {PrimaryVisibility::rt, "rt"}, {PrimaryVisibility::compute, "compute"}}};
+
 // "raster", "rt", "compute"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
-std::string_view primary_visibility_name(PrimaryVisibility primary);
-PrimaryVisibility parse_primary_visibility(std::string_view name);
+inline std::string_view primary_visibility_name(PrimaryVisibility primary) {
+  return kPrimaryVisibilityNames.name_of(primary);
+}
+inline PrimaryVisibility parse_primary_visibility(std::string_view name) { return kPrimaryVisibilityNames.parse(name); }
 
 struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels

@@ -1,21 +1,16 @@
 #include "render/ray_traced_reflections.h"
 
+#include "backends/registry.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "gl/gl_pass_scope.h"
 #include "rt/instance_subset_tracer.h"
 
-#include <chrono>
 #include <cmath>
 #include <utility>
 
 namespace glint::render {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 RayHitMemory buffer_memory(rt::RayTracer& tracer) {
   return tracer.device_tracing() || tracer.gl_tracing() ? RayHitMemory::device : RayHitMemory::host_mapped;
@@ -30,7 +25,7 @@ std::size_t pixel_count(int width, int height) {
 
 std::unique_ptr<rt::RayTracer> build_ray_tracer(const Scene& scene, const RayTracingSettings& settings) {
   settings.validate();
-  std::unique_ptr<rt::RayTracer> tracer = rt::make_ray_tracer(settings.backend);
+  std::unique_ptr<rt::RayTracer> tracer = backends::make_ray_tracer(settings.backend);
   if (!settings.traced_instances.empty())
     tracer = std::make_unique<rt::InstanceSubsetTracer>(std::move(tracer), settings.traced_instances);
   tracer->build(scene, settings.accel);
@@ -105,9 +100,9 @@ void RayTracedReflections::trace(RayListCounts host_counts, std::size_t slot, ve
   if (!device_) {
     RayTraceFrameStats& stats = slot_stats_[slot];
     stats = {host_counts.rays, host_counts.reflective, 0.0};
-    const auto trace_start = Clock::now();
+    const Stopwatch trace_watch;
     tracer_->trace_closest(buffers_.rays(host_counts.rays), buffers_.hits(host_counts.rays));
-    stats.trace_ms = milliseconds_since(trace_start);
+    stats.trace_ms = trace_watch.elapsed_ms();
     return;
   }
   // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the

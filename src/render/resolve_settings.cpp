@@ -6,21 +6,6 @@
 
 namespace glint::render {
 
-std::string_view tone_map_name(ToneMap tone_map) {
-  switch (tone_map) {
-    case ToneMap::none: return "none";
-    case ToneMap::reinhard: return "reinhard";
-    case ToneMap::aces: return "aces";
-  }
-  return "unknown";
-}
-
-ToneMap tone_map_from_name(std::string_view name) {
-  for (const ToneMap tone_map : {ToneMap::none, ToneMap::reinhard, ToneMap::aces})
-    if (tone_map_name(tone_map) == name) return tone_map;
-  fail("unknown tone map '{}' (known: none, reinhard, aces)", name);
-}
-
 void validate(const ResolveSettings& s) {
   if (!std::isfinite(s.fade_start) || !std::isfinite(s.fade_end))
     fail("resolve settings: fade_start {} and fade_end {} must be finite", s.fade_start, s.fade_end);

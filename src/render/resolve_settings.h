@@ -1,6 +1,8 @@
 #pragma once
 // Tunables of the reflection resolve: distance fade, blur (ReflectionBlurPass) and composite + tone
 // map (ResolvePass). docs/ssr.md gives the formulas.
+#include "core/enum_names.h"
+
 #include <string_view>
 
 namespace glint::render {
@@ -11,9 +13,12 @@ enum class ToneMap {
   aces,      // Narkowicz's fit of the ACES filmic curve, per channel
 };
 
+inline constexpr EnumNames<ToneMap, 3> kToneMapNames{
+    "tone map", {{ToneMap::none, "none"}, {ToneMap::reinhard, "reinhard"}, {ToneMap::aces, "aces"}}};
+
 // "none", "reinhard", "aces"; and back (an unknown name is a glint::Error listing the known ones).
-std::string_view tone_map_name(ToneMap tone_map);
-ToneMap tone_map_from_name(std::string_view name);
+inline std::string_view tone_map_name(ToneMap tone_map) { return kToneMapNames.name_of(tone_map); }
+inline ToneMap tone_map_from_name(std::string_view name) { return kToneMapNames.parse(name); }
 
 struct ResolveSettings {
   // Distance fade of the reflection by the reflected ray's world length d (reflection.a):

@@ -10,15 +10,20 @@
 // glint render defaults to rt: exact hard shadows of the point light, and the fastest method on both
 // machines (shadow pass 0.72 against 3.45 ms on the H100, 11 against 105 ms on llvmpipe with the cpu
 // backend; docs/perf.md, "GPU-first frame").
+#include "core/enum_names.h"
+
 #include <string_view>
 
 namespace glint::render {
 
 enum class ShadowMethod { cube, rt, hybrid };
 
+inline constexpr EnumNames<ShadowMethod, 3> kShadowMethodNames{
+    "shadow method", {{ShadowMethod::cube, "cube"}, {ShadowMethod::rt, "rt"}, {ShadowMethod::hybrid, "hybrid"}}};
+
 // "cube", "rt", "hybrid"; parse_shadow_method is the inverse (glint::Error naming the known ones).
-std::string_view shadow_method_name(ShadowMethod method);
-ShadowMethod parse_shadow_method(std::string_view name);
+inline std::string_view shadow_method_name(ShadowMethod method) { return kShadowMethodNames.name_of(method); }
+inline ShadowMethod parse_shadow_method(std::string_view name) { return kShadowMethodNames.parse(name); }
 
 struct ShadowSettings {
   ShadowMethod method = ShadowMethod::cube;

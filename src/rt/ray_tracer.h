@@ -12,9 +12,8 @@
 #include "accel/builder.h"
 #include "accel/build_options.h"
 #include "accel/ray.h"
-#include "cuda/trace_kernel.h"
+#include "core/enum_names.h"
 #include "rt/blas_structure.h"
-#include "rt/gas_build_preference.h"
 #include "scene/scene.h"
 
 #include <cstddef>
@@ -33,13 +32,16 @@ namespace glint::rt {
 // automatic: refit, then rebuild when the refitted structure got too much worse (see AccelOptions).
 enum class UpdatePolicy { rebuild, refit, automatic };
 
-inline constexpr UpdatePolicy kAllUpdatePolicies[] = {UpdatePolicy::rebuild, UpdatePolicy::refit,
-                                                      UpdatePolicy::automatic};
+// CLI names (--update): "rebuild", "refit", "auto".
+inline constexpr EnumNames<UpdatePolicy, 3> kUpdatePolicyNames{
+    "update policy",
+    {{UpdatePolicy::rebuild, "rebuild"}, {UpdatePolicy::refit, "refit"}, {UpdatePolicy::automatic, "auto"}}};
 
-// CLI names: "rebuild", "refit", "auto".
-std::string_view update_policy_name(UpdatePolicy policy);
+inline constexpr auto kAllUpdatePolicies = kUpdatePolicyNames.values();
+
+inline std::string_view update_policy_name(UpdatePolicy policy) { return kUpdatePolicyNames.name_of(policy); }
 // Inverse of update_policy_name; glint::Error listing the known names otherwise.
-UpdatePolicy parse_update_policy(std::string_view name);
+inline UpdatePolicy parse_update_policy(std::string_view name) { return kUpdatePolicyNames.parse(name); }
 
 struct AccelOptions {
   // cpu backend: the builder of every BLAS (the TLAS over instances is always binned SAH: it is
@@ -61,10 +63,12 @@ struct AccelOptions {
   // kernels, several times faster); false traces the binary BVHs (kept for comparison). Builders
   // whose BVH cannot be collapsed (sbvh: split references) trace the binary BVH either way.
   bool wide_traversal = true;
-  // cuda backend: which closest-hit kernel traces the ray lists (cuda/trace_kernel.h).
-  cuda::TraceKernel cuda_trace_kernel = cuda::kDefaultTraceKernel;
-  // optix backend: how OptiX builds every GAS (and the IAS); the BVH builder above is not used.
-  OptixBuildPreference optix_build = OptixBuildPreference::fast_trace;
+  // Backends that build their own structures and offer a choice of them (the backend registry's
+  // Backend::structures, e.g. optix: "optix-fasttrace", "optix-fastbuild"): the one to build; empty
+  // means the backend's default. Each backend parses its own names (optix/build_preference.h), so rt/
+  // knows none of them. Options a backend takes that are no structure live in its own folder
+  // (cuda/cuda_ray_tracer.h: the trace kernel).
+  std::string backend_structure;
 };
 
 struct RayTracerStats {
@@ -207,14 +211,7 @@ public:
   virtual std::optional<GpuTicket> last_update() const { return std::nullopt; }
 };
 
-// "cpu", "embree", "cuda" (cuda/cuda_ray_tracer.h; glint::Error without CUDA or a GPU) or "optix"
-// (optix/backend.h); glint::Error listing the known names otherwise, or check_backend_built's.
-std::unique_ptr<RayTracer> make_ray_tracer(std::string_view backend);
-// True for the backends whose structures live on the GPU and that trace through DeviceTracing ("cuda",
-// "optix"): they need a CUDA GPU, trace the GL-shared ray list in place and follow the GPU deformer.
-bool is_gpu_backend(std::string_view backend);
-// glint::Error, one line saying how to enable it, for a backend this build lacks (optix without
-// OptiX); nothing otherwise. Lets a command refuse before it writes anything.
-void check_backend_built(std::string_view backend);
+// The backends themselves (names, factories, which this binary has) are listed in one place above
+// rt/, cuda/, optix/ and gl_rt/: backends/registry.h (backends::make_ray_tracer). rt/ knows none.
 
 }  // namespace glint::rt

@@ -1,9 +1,9 @@
 #include "viewer/viewer_session.h"
 
+#include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
 #include "gl/gpu_memory.h"
-#include "rt/ray_tracer.h"
 #include "scene/load_scene.h"
 #include "viewer/viewer_settings.h"
 
@@ -23,8 +23,8 @@ Scene load(const RenderOptions& options) {
 void check_runnable(const RenderOptions& options) {
   const render::FramePipelineSettings settings = render_pipeline_settings(options);
   if (render::uses_ray_tracer(settings)) {
-    rt::check_backend_built(options.backend);
-    if (rt::is_gpu_backend(options.backend)) require_cuda_gpu(("backend " + options.backend).c_str());
+    backends::check_backend_built(options.backend);
+    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("backend " + options.backend).c_str());
   }
   if (options.deform == "on" && deforms_on_gpu(options)) require_cuda_gpu("deformation on the GPU");
 }

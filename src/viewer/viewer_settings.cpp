@@ -1,9 +1,13 @@
 #include "viewer/viewer_settings.h"
 
 #include "accel/builder.h"
+#include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
-#include "rt/gas_build_preference.h"
+#include "render/raster_settings.h"
+#include "render/reflection_mode.h"
+#include "render/resolve_settings.h"
+#include "render/shadow_method.h"
 #include "rt/ray_tracer.h"
 
 #include <fmt/format.h>
@@ -16,32 +20,31 @@ namespace glint::viewer {
 namespace {
 
 std::vector<std::string> accel_choices() {
-  std::vector<std::string> names;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders) names.emplace_back(accel::builder_name(builder));
-  for (const rt::OptixBuildPreference preference : rt::kAllOptixBuildPreferences)
-    names.emplace_back(rt::optix_accel_name(preference));
+  std::vector<std::string> names = accel::kBvhBuilderNames.names();
+  for (const backends::Backend& backend : backends::all_backends())
+    names.insert(names.end(), backend.structures.begin(), backend.structures.end());
   return names;
 }
 
 std::vector<ViewerSetting> make_settings() {
   using O = RenderOptions;
   return {
-      {"reflections", &O::reflections, {"off", "ssr", "hybrid", "rt"}},
-      {"backend", &O::backend, {"cpu", "embree", "gl", "cuda", "optix"}},
+      {"reflections", &O::reflections, render::kReflectionModeNames.names()},
+      {"backend", &O::backend, backends::backend_names()},
       {"accel", &O::accel, accel_choices()},
-      {"update", &O::update, {"rebuild", "refit", "auto"}},
+      {"update", &O::update, rt::kUpdatePolicyNames.names()},
       {"deform", &O::deform, {"on", "off"}},
-      {"gbuffer", &O::gbuffer, {"raster", "visibility"}},
-      {"primary", &O::primary, {"raster", "rt", "compute"}},
-      {"shadows", &O::shadows, {"cube", "rt", "hybrid"}},
+      {"gbuffer", &O::gbuffer, render::kGBufferMethodNames.names()},
+      {"primary", &O::primary, render::kPrimaryVisibilityNames.names()},
+      {"shadows", &O::shadows, render::kShadowMethodNames.names()},
       {"shadow-map-size", &O::shadow_map_size, {}, 16, 8192},
-      {"shadow-cube-draw", &O::shadow_cube_draw, {"per-face", "layered"}},
+      {"shadow-cube-draw", &O::shadow_cube_draw, render::kShadowCubeDrawNames.names()},
       {"ssr-max-steps", &O::ssr_max_steps, {}, 1, 4096},
       {"ssr-thickness", &O::ssr_thickness, {}, 0.001, 100.0},
       {"ssr-confidence", &O::ssr_confidence, {}, 0.0, 1.0},
       {"blur-radius", &O::blur_radius, {}, 0, 32},
       {"exposure", &O::exposure, {}, 0.01, 100.0},
-      {"tone-map", &O::tone_map, {"aces", "reinhard", "none"}},
+      {"tone-map", &O::tone_map, render::kToneMapNames.names()},
   };
 }
 
@@ -104,15 +107,10 @@ bool same_viewer_settings(const RenderOptions& a, const RenderOptions& b) {
 }
 
 std::vector<std::string> available_backends() {
-  std::vector<std::string> backends{"cpu", "embree", "gl"};
-  for (const char* gpu_backend : {"cuda", "optix"}) {
-    try {
-      rt::check_backend_built(gpu_backend);
-    } catch (const Error&) {
-      continue;
-    }
-    if (cuda_gpu_present()) backends.emplace_back(gpu_backend);
-  }
+  std::vector<std::string> backends;
+  for (const backends::Backend& backend : backends::all_backends())
+    if (backend.built() && (backend.device != backends::Device::cuda || cuda_gpu_present()))
+      backends.push_back(backend.name);
   return backends;
 }
 

@@ -5,6 +5,7 @@
 #include "app/bench/backend_availability.h"
 #include "app/bench/paper_matrix.h"
 #include "app/cli_runner.h"
+#include "backends/registry.h"
 #include "core/image.h"
 #include "support/temp_folder.h"
 #include "../gl/gl_test_context.h"
@@ -60,7 +61,7 @@ TEST_F(RenderCliGlBackend, GpuDeformationIsOneClearLine) {
 TEST(BenchGlBackend, IsAvailableWithGlintsBuilders) {
   // No GL context here: gl is made on the cells' context, so availability does not make one.
   EXPECT_FALSE(bench::backend_unavailable_reason("gl").has_value());
-  EXPECT_TRUE(bench::backend_takes_accel("gl"));
+  EXPECT_TRUE(backends::find_backend("gl").takes_glint_builders);
   const std::vector<bench::Structure> structures = bench::structures_of({"gl"}, {"sah", "lbvh"});
   ASSERT_EQ(structures.size(), 2u);
   EXPECT_EQ(structures[1].label(), "gl-lbvh");

@@ -2,7 +2,9 @@
 // the world triangles and against its own closest hits, for every builder and both trace kernels,
 // after deformation with every policy, and through the device path with the ray count read on the
 // GPU. Needs a CUDA GPU; skipped elsewhere.
+#include "cuda/cuda_ray_tracer.h"
 #include "cuda/device_query.h"
+#include "backends/registry.h"
 #include "rt/ray_tracer.h"
 #include "rt/hit_shadow_ray.h"
 #include "rt/ray_tracer_check.h"
@@ -31,10 +33,9 @@ using testing::trace_occluded;
 
 constexpr cuda::TraceKernel kKernels[] = {cuda::TraceKernel::one_ray_per_thread, cuda::TraceKernel::persistent};
 
-AccelOptions cuda_options(accel::BvhBuilder builder, cuda::TraceKernel kernel = cuda::kDefaultTraceKernel) {
+AccelOptions cuda_options(accel::BvhBuilder builder) {
   AccelOptions options;
   options.builder = builder;
-  options.cuda_trace_kernel = kernel;
   return options;
 }
 
@@ -45,8 +46,8 @@ TEST(CudaRayTracerOcclusion, EveryBuilderAndKernelEqualsBruteForce) {
   const std::vector<uint8_t> expected = brute_force_occluded(scene, rays);
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
     for (cuda::TraceKernel kernel : kKernels) {
-      const auto tracer = make_ray_tracer("cuda");
-      tracer->build(scene, cuda_options(builder, kernel));
+      const auto tracer = cuda::make_cuda_ray_tracer({kernel});
+      tracer->build(scene, cuda_options(builder));
       const std::vector<uint8_t> occluded = trace_occluded(*tracer, rays);
       const std::string label = std::string(accel::builder_name(builder)) + " " + std::string(cuda::trace_kernel_name(kernel));
       EXPECT_EQ(compare_occluded(rays, expected, occluded), "") << label;
@@ -64,7 +65,7 @@ TEST(CudaRayTracerOcclusion, EdgeRaysAreOccludedAndReflectionRaysAgreeWithCloses
   std::vector<accel::Ray> reflections = testing::reflection_like_rays(scene, 100000, 21);
   for (size_t i = 0; i < reflections.size(); i += 3) reflections[i].t_max = 2.0f;
   for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah}) {
-    const auto tracer = make_ray_tracer("cuda");
+    const auto tracer = backends::make_ray_tracer("cuda");
     tracer->build(scene, cuda_options(builder));
     EXPECT_EQ(compare_occluded(edges, std::vector<uint8_t>(edges.size(), 1), trace_occluded(*tracer, edges)), "")
         << accel::builder_name(builder);
@@ -79,7 +80,7 @@ TEST(CudaRayTracerOcclusion, FollowsDeformationWithEveryPolicy) {
   for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::ploc, accel::BvhBuilder::sah}) {
     for (UpdatePolicy policy : kAllUpdatePolicies) {
       Scene scene = testing::make_instanced_scene();
-      const auto tracer = make_ray_tracer("cuda");
+      const auto tracer = backends::make_ray_tracer("cuda");
       tracer->build(scene, cuda_options(builder));
       const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 1500, 5);
       const std::vector<uint8_t> rest = brute_force_occluded(scene, rays);
@@ -98,7 +99,7 @@ TEST(CudaRayTracerOcclusion, FollowsDeformationWithEveryPolicy) {
 TEST(CudaRayTracerOcclusion, MisuseIsAClearError) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   const std::vector<accel::Ray> rays(3);
   std::vector<uint8_t> occluded(3);
   EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, occluded); }).find("trace_any() before build()"),
@@ -145,8 +146,8 @@ TEST(CudaRayTracerOcclusion, DeviceQueryReadsTheRayCountOnTheGpu) {
   accel::Hit* device_hits = device_copy(std::vector<accel::Hit>(rays.size()));
   uint32_t* device_count = device_copy(std::vector<uint32_t>{traced});
   for (cuda::TraceKernel kernel : kKernels) {
-    const auto tracer = make_ray_tracer("cuda");
-    tracer->build(scene, cuda_options(accel::BvhBuilder::sah, kernel));
+    const auto tracer = cuda::make_cuda_ray_tracer({kernel});
+    tracer->build(scene, cuda_options(accel::BvhBuilder::sah));
     DeviceTracing* device = tracer->device_tracing();
     ASSERT_EQ(cudaMemcpy(device_occluded, std::vector<uint32_t>(rays.size(), kSentinel).data(),
                          rays.size() * sizeof(uint32_t), cudaMemcpyHostToDevice),
@@ -189,7 +190,7 @@ TEST(CudaRayTracerOcclusion, HitShadowRaysAreTracedWithTheHits) {
   const uint32_t traced = capacity - 101;
   const vec3 light = scene.world_bounds().center() + vec3(0.0f, 0.3f, 0.1f) * length(scene.world_bounds().extent());
   const float offset = 1e-4f * length(scene.world_bounds().extent());
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   tracer->build(scene, {});
   DeviceTracing* device = tracer->device_tracing();
   ASSERT_TRUE(device->traces_hit_shadows());
@@ -248,7 +249,7 @@ TEST(CudaRayTracerOcclusion, HitShadowRaysAreTracedWithTheHits) {
 TEST(CudaRayTracerOcclusion, GpuTimesAreKeptPerTicket) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   tracer->build(scene, {});
   DeviceTracing* device = tracer->device_tracing();
   const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 64, 3);

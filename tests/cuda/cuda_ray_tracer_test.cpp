@@ -3,7 +3,9 @@
 // every update policy, and through its device-side entry points (rays, hits and the ray count in
 // device memory, vertices rewritten on the GPU). Needs a CUDA GPU; skipped elsewhere, except the
 // error cases that need none.
+#include "cuda/cuda_ray_tracer.h"
 #include "cuda/device_query.h"
+#include "backends/registry.h"
 #include "rt/ray_tracer.h"
 #include "rt/ray_tracer_check.h"
 #include "rt/reflection_rays.h"
@@ -34,7 +36,7 @@ AccelOptions with_builder(accel::BvhBuilder builder) {
 
 TEST(CudaRayTracer, WithoutAGpuTheBackendIsOneClearError) {
   if (cuda_gpu_present()) GTEST_SKIP() << "a CUDA GPU is present";
-  const std::string error = testing::error_of([] { (void)make_ray_tracer("cuda"); });
+  const std::string error = testing::error_of([] { (void)backends::make_ray_tracer("cuda"); });
   EXPECT_NE(error.find("--backend cuda"), std::string::npos) << error;
 }
 
@@ -44,7 +46,7 @@ TEST(CudaRayTracer, EveryBuilderEqualsBruteForceOnAnInstancedScene) {
   const std::vector<accel::Ray> rays = random_rays(scene, 3000, 7);
   const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
-    const auto tracer = make_ray_tracer("cuda");
+    const auto tracer = backends::make_ray_tracer("cuda");
     EXPECT_EQ(tracer->name(), "cuda");
     ASSERT_NE(tracer->device_tracing(), nullptr);
     tracer->build(scene, with_builder(builder));
@@ -61,7 +63,7 @@ TEST(CudaRayTracer, EveryBuilderEqualsTheCpuBackendOn100kReflectionRays) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const Scene scene = testing::make_reduced_atrium();
   const std::vector<accel::Ray> rays = testing::reflection_like_rays(scene, 100000, 21);
-  const auto cpu = make_ray_tracer("cpu");
+  const auto cpu = backends::make_ray_tracer("cpu");
   cpu->build(scene, {});
   const std::vector<accel::Hit> expected = trace(*cpu, rays);
   size_t hit_count = 0;
@@ -70,10 +72,8 @@ TEST(CudaRayTracer, EveryBuilderEqualsTheCpuBackendOn100kReflectionRays) {
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
     if (builder == accel::BvhBuilder::none) continue;  // brute force on 100k rays: covered above on fewer
     for (cuda::TraceKernel kernel : {cuda::TraceKernel::one_ray_per_thread, cuda::TraceKernel::persistent}) {
-      const auto tracer = make_ray_tracer("cuda");
-      AccelOptions options = with_builder(builder);
-      options.cuda_trace_kernel = kernel;
-      tracer->build(scene, options);
+      const auto tracer = cuda::make_cuda_ray_tracer({kernel});
+      tracer->build(scene, with_builder(builder));
       EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "")
           << accel::builder_name(builder) << " " << cuda::trace_kernel_name(kernel);
     }
@@ -82,7 +82,7 @@ TEST(CudaRayTracer, EveryBuilderEqualsTheCpuBackendOn100kReflectionRays) {
 
 // The cpu backend's SAH drift after refitting the same builder's BLASes through the same frames.
 double cpu_refit_drift(Scene scene, accel::BvhBuilder builder, std::initializer_list<int> frames) {
-  const auto tracer = make_ray_tracer("cpu");
+  const auto tracer = backends::make_ray_tracer("cpu");
   tracer->build(scene, with_builder(builder));
   SceneDeformers deformers(scene);
   for (int frame : frames) tracer->update(scene, deformers.apply(scene, frame), UpdatePolicy::refit);
@@ -91,7 +91,7 @@ double cpu_refit_drift(Scene scene, accel::BvhBuilder builder, std::initializer_
 
 void check_updates(Scene scene, accel::BvhBuilder builder, UpdatePolicy policy) {
   const Scene rest_scene = scene;
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   tracer->build(scene, with_builder(builder));
   SceneDeformers deformers(scene);
   const std::vector<accel::Ray> rays = random_rays(scene, 1500, 5);
@@ -141,7 +141,7 @@ TEST(CudaRayTracer, UpdateFollowsMovedInstances) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   for (UpdatePolicy policy : kAllUpdatePolicies) {
     Scene moved = testing::make_instanced_scene();
-    const auto tracer = make_ray_tracer("cuda");
+    const auto tracer = backends::make_ray_tracer("cuda");
     tracer->build(moved, {});
     moved.instances[5].transform[3] += vec4(0.5f, 1.0f, -0.25f, 0.0f);
     tracer->update(moved, {}, policy);
@@ -154,7 +154,7 @@ TEST(CudaRayTracer, UpdateFollowsMovedInstances) {
 TEST(CudaRayTracer, RefitOfASplitStructureIsAClearErrorAndChangesNothing) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   tracer->build(scene, with_builder(accel::BvhBuilder::sbvh));
   SceneDeformers deformers(scene);
   const std::vector<uint32_t> dirty = deformers.apply(scene, 10);
@@ -166,7 +166,7 @@ TEST(CudaRayTracer, RefitOfASplitStructureIsAClearErrorAndChangesNothing) {
 TEST(CudaRayTracer, MisuseIsAClearError) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   std::vector<accel::Ray> rays(3);
   std::vector<accel::Hit> hits(3);
   EXPECT_NE(testing::error_of([&] { tracer->trace_closest(rays, hits); }).find("before build()"), std::string::npos);
@@ -206,7 +206,7 @@ TEST(CudaRayTracer, DeviceTraceReadsTheRayCountOnTheGpu) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const Scene scene = testing::make_instanced_scene();
   const std::vector<accel::Ray> rays = random_rays(scene, 2000, 13);
-  const auto tracer = make_ray_tracer("cuda");
+  const auto tracer = backends::make_ray_tracer("cuda");
   tracer->build(scene, {});
   DeviceTracing* device = tracer->device_tracing();
   const uint32_t traced = 1234;
@@ -224,15 +224,15 @@ TEST(CudaRayTracer, DeviceTraceReadsTheRayCountOnTheGpu) {
   EXPECT_EQ(compare_hits(scene, traced_rays, expected, std::span<const accel::Hit>(hits.data(), traced)), "");
   for (size_t i = traced; i < hits.size(); ++i) ASSERT_EQ(hits[i].t, -7.0f) << "slot " << i << " past the count";
   // The persistent kernel stops at the same count.
-  AccelOptions persistent;
-  persistent.cuda_trace_kernel = cuda::TraceKernel::persistent;
-  tracer->build(scene, persistent);
+  const auto persistent_tracer = cuda::make_cuda_ray_tracer({cuda::TraceKernel::persistent});
+  persistent_tracer->build(scene, {});
+  DeviceTracing* persistent_device = persistent_tracer->device_tracing();
   const std::vector<accel::Hit> sentinels(rays.size(), sentinel);
   ASSERT_EQ(cudaMemcpy(device_hits, sentinels.data(), rays.size() * sizeof(accel::Hit), cudaMemcpyHostToDevice),
             cudaSuccess);
-  const GpuTicket persistent_ticket =
-      device->trace_closest_device(device_rays, device_hits, device_count, static_cast<uint32_t>(rays.size()));
-  EXPECT_GE(*device->gpu_ms(persistent_ticket, /*wait=*/true), 0.0);
+  const GpuTicket persistent_ticket = persistent_device->trace_closest_device(device_rays, device_hits, device_count,
+                                                                             static_cast<uint32_t>(rays.size()));
+  EXPECT_GE(*persistent_device->gpu_ms(persistent_ticket, /*wait=*/true), 0.0);
   const std::vector<accel::Hit> persistent_hits = host_copy(device_hits, rays.size());
   EXPECT_EQ(compare_hits(scene, traced_rays, expected, std::span<const accel::Hit>(persistent_hits.data(), traced)),
             "");
@@ -249,7 +249,7 @@ TEST(CudaRayTracer, DeviceUpdateFollowsVerticesWrittenOnTheGpu) {
   for (accel::BvhBuilder builder : {accel::BvhBuilder::lbvh, accel::BvhBuilder::sah}) {
     for (UpdatePolicy policy : kAllUpdatePolicies) {
       Scene scene = testing::make_instanced_scene();
-      const auto tracer = make_ray_tracer("cuda");
+      const auto tracer = backends::make_ray_tracer("cuda");
       tracer->build(scene, with_builder(builder));
       SceneDeformers deformers(scene);
       const std::vector<uint32_t> dirty = deformers.apply(scene, 23);

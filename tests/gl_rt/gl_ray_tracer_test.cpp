@@ -4,6 +4,7 @@
 // count in GL buffers, the count read on the GPU); updates after deformation by every policy; moved
 // instances; misuse. Runs on whatever OpenGL 4.5 the machine has (llvmpipe here and in CI).
 #include "gl_rt/gl_ray_tracer.h"
+#include "backends/registry.h"
 
 #include "accel/builder.h"
 #include "gl/gl_objects.h"
@@ -67,12 +68,12 @@ std::vector<T> read_back(const GlBuffer& buffer, size_t count) {
 TEST(GlRayTracerContext, WithoutACurrentContextItIsOneClearError) {
   // A fresh thread has no current context, whatever other tests left on the main thread.
   std::string error;
-  std::thread([&] { error = testing::error_of([] { (void)rt::make_ray_tracer("gl"); }); }).join();
+  std::thread([&] { error = testing::error_of([] { (void)backends::make_ray_tracer("gl"); }); }).join();
   EXPECT_NE(error.find("--backend gl needs an OpenGL 4.5 context"), std::string::npos) << error;
 }
 
 TEST_F(GlRayTracerTest, MakeRayTracerGivesTheGlBackendWithGlTracing) {
-  const auto tracer = rt::make_ray_tracer("gl");
+  const auto tracer = backends::make_ray_tracer("gl");
   EXPECT_EQ(tracer->name(), "gl");
   EXPECT_EQ(tracer->gl_tracing(), dynamic_cast<GlRayTracer*>(tracer.get()));
   EXPECT_EQ(tracer->device_tracing(), nullptr);
@@ -111,7 +112,7 @@ TEST_F(GlRayTracerTest, ClosestHitsEqualBruteForceAndTheCpuBackendOnTheReducedAt
     tracer.build(scene, with_builder(builder));
     const std::vector<accel::Hit> hits = trace(tracer, rays);
     EXPECT_EQ(compare_hits(scene, rays, expected, hits), "") << accel::builder_name(builder);
-    const auto cpu = rt::make_ray_tracer("cpu");
+    const auto cpu = backends::make_ray_tracer("cpu");
     cpu->build(scene, with_builder(builder));
     EXPECT_EQ(compare_hits(scene, rays, trace(*cpu, rays), hits), "") << "cpu vs gl " << accel::builder_name(builder);
   }

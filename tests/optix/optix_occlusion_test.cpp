@@ -3,6 +3,8 @@
 // deformation, and through the device path with the ray count read on the GPU. Needs a build with
 // OptiX and a CUDA GPU; skipped elsewhere (the GPU machine runs them: --gtest_filter='Optix*').
 #include "rt/ray_tracer.h"
+#include "backends/registry.h"
+#include "optix/build_preference.h"
 
 #include "optix/test_support.h"
 #include "rt/ray_tracer_check.h"
@@ -33,9 +35,9 @@ using testing::occlusion_test_rays;
 using testing::trace;
 using testing::trace_occluded;
 
-AccelOptions optix_options(OptixBuildPreference preference) {
+AccelOptions optix_options(optix::BuildPreference preference) {
   AccelOptions options;
-  options.optix_build = preference;
+  options.backend_structure = optix::kBuildPreferenceNames.name_of(preference);
   return options;
 }
 
@@ -57,15 +59,15 @@ TEST(OptixRayTracerOcclusion, EqualsBruteForceAndItsOwnClosestHits) {
   const std::vector<uint8_t> expected = brute_force_occluded(scene, rays);
   // Shared interior edges and vertices: a watertight test hits them whatever its rounding.
   const std::vector<accel::Ray> edges = testing::edge_and_vertex_rays(scene, 4000, 11);
-  for (const OptixBuildPreference preference : kAllOptixBuildPreferences) {
-    const auto tracer = make_ray_tracer("optix");
+  for (const optix::BuildPreference preference : optix::kAllBuildPreferences) {
+    const auto tracer = backends::make_ray_tracer("optix");
     tracer->build(scene, optix_options(preference));
     const std::vector<uint8_t> occluded = trace_occluded(*tracer, rays);
-    EXPECT_EQ(compare_occluded_off_edges(rays, expected, occluded), "") << optix_accel_name(preference);
+    EXPECT_EQ(compare_occluded_off_edges(rays, expected, occluded), "") << optix::kBuildPreferenceNames.name_of(preference);
     // The same triangle tests in both queries: exactly the rays with a closest hit are occluded.
-    EXPECT_EQ(compare_occluded(rays, hit_exists(trace(*tracer, rays)), occluded), "") << optix_accel_name(preference);
+    EXPECT_EQ(compare_occluded(rays, hit_exists(trace(*tracer, rays)), occluded), "") << optix::kBuildPreferenceNames.name_of(preference);
     EXPECT_EQ(compare_occluded(edges, std::vector<uint8_t>(edges.size(), 1), trace_occluded(*tracer, edges)), "")
-        << optix_accel_name(preference) << " edges";
+        << optix::kBuildPreferenceNames.name_of(preference) << " edges";
   }
 }
 
@@ -74,7 +76,7 @@ TEST(OptixRayTracerOcclusion, ReflectionRaysOnReducedAtriumAgreeWithClosestHits)
   const Scene scene = testing::make_reduced_atrium();
   std::vector<accel::Ray> rays = testing::reflection_like_rays(scene, 100000, 21);
   for (size_t i = 0; i < rays.size(); i += 3) rays[i].t_max = 2.0f;
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   tracer->build(scene, {});
   EXPECT_EQ(compare_occluded(rays, hit_exists(trace(*tracer, rays)), trace_occluded(*tracer, rays)), "");
 }
@@ -83,7 +85,7 @@ TEST(OptixRayTracerOcclusion, FollowsDeformationWithEveryPolicy) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   for (const UpdatePolicy policy : kAllUpdatePolicies) {
     Scene scene = testing::make_instanced_scene();
-    const auto tracer = make_ray_tracer("optix");
+    const auto tracer = backends::make_ray_tracer("optix");
     tracer->build(scene, {});
     const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 4000, 5);
     const std::vector<uint8_t> rest = brute_force_occluded(scene, rays);
@@ -101,7 +103,7 @@ TEST(OptixRayTracerOcclusion, FollowsDeformationWithEveryPolicy) {
 TEST(OptixRayTracerOcclusion, MisuseIsAClearError) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   const std::vector<accel::Ray> rays(1);
   std::vector<uint8_t> occluded(1);
   EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, occluded); }).find("trace_any() before build()"),
@@ -125,7 +127,7 @@ TEST(OptixRayTracerOcclusion, MisuseIsAClearError) {
 TEST(OptixRayTracerOcclusion, DeviceQueryStopsAtTheGpuSideRayCount) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   tracer->build(scene, {});
   DeviceTracing& device = *tracer->device_tracing();
   const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 4000, 13);

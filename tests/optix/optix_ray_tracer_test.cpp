@@ -2,6 +2,8 @@
 // the host and the device-resident paths. Needs a build with OptiX and a CUDA GPU; skipped elsewhere
 // (the GPU machine runs them: --gtest_filter='Optix*').
 #include "rt/ray_tracer.h"
+#include "backends/registry.h"
+#include "optix/build_preference.h"
 
 #include "optix/test_support.h"
 #include "rt/ray_tracer_check.h"
@@ -30,9 +32,9 @@ using testing::random_rays;
 using testing::reflection_like_rays;
 using testing::trace;
 
-AccelOptions optix_options(OptixBuildPreference preference) {
+AccelOptions optix_options(optix::BuildPreference preference) {
   AccelOptions options;
-  options.optix_build = preference;
+  options.backend_structure = optix::kBuildPreferenceNames.name_of(preference);
   return options;
 }
 
@@ -43,7 +45,7 @@ std::size_t hit_count(std::span<const accel::Hit> hits) {
 }
 
 std::vector<accel::Hit> cpu_hits(const Scene& scene, std::span<const accel::Ray> rays) {
-  const auto cpu = make_ray_tracer("cpu");
+  const auto cpu = backends::make_ray_tracer("cpu");
   cpu->build(scene, {});
   return trace(*cpu, rays);
 }
@@ -54,12 +56,12 @@ TEST(OptixRayTracer, HitsEqualBruteForceOnTheInstancedScene) {
   const std::vector<accel::Ray> rays = random_rays(scene, 20000, 7);
   const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
   ASSERT_GT(hit_count(expected), rays.size() / 4) << "the rays must mostly hit something to test anything";
-  for (const OptixBuildPreference preference : kAllOptixBuildPreferences) {
-    const auto tracer = make_ray_tracer("optix");
+  for (const optix::BuildPreference preference : optix::kAllBuildPreferences) {
+    const auto tracer = backends::make_ray_tracer("optix");
     EXPECT_EQ(tracer->name(), "optix");
     ASSERT_NE(tracer->device_tracing(), nullptr);
     tracer->build(scene, optix_options(preference));
-    EXPECT_EQ(compare_hits_off_edges(scene, rays, expected, trace(*tracer, rays)), "") << optix_accel_name(preference);
+    EXPECT_EQ(compare_hits_off_edges(scene, rays, expected, trace(*tracer, rays)), "") << optix::kBuildPreferenceNames.name_of(preference);
     const RayTracerStats stats = tracer->stats();
     EXPECT_EQ(stats.backend, "optix");
     EXPECT_GT(stats.memory_bytes, 0u);
@@ -77,10 +79,10 @@ TEST(OptixRayTracer, HitsEqualTheCpuBackendOnReducedAtriumReflectionRays) {
   rays.insert(rays.end(), random.begin(), random.end());
   const std::vector<accel::Hit> expected = cpu_hits(scene, rays);
   ASSERT_GT(hit_count(expected), rays.size() / 4);
-  for (const OptixBuildPreference preference : kAllOptixBuildPreferences) {
-    const auto tracer = make_ray_tracer("optix");
+  for (const optix::BuildPreference preference : optix::kAllBuildPreferences) {
+    const auto tracer = backends::make_ray_tracer("optix");
     tracer->build(scene, optix_options(preference));
-    EXPECT_EQ(compare_hits_off_edges(scene, rays, expected, trace(*tracer, rays)), "") << optix_accel_name(preference);
+    EXPECT_EQ(compare_hits_off_edges(scene, rays, expected, trace(*tracer, rays)), "") << optix::kBuildPreferenceNames.name_of(preference);
   }
 }
 
@@ -94,11 +96,11 @@ TEST(OptixRayTracer, UpdatedGasHitsEqualRebuiltGasHitsAfterDeformation) {
   SceneDeformers deformers(scene);
   const std::vector<accel::Ray> rays = random_rays(scene, 100000, 5);
   const std::vector<accel::Hit> rest = cpu_hits(scene, rays);
-  for (const OptixBuildPreference preference : kAllOptixBuildPreferences) {
+  for (const optix::BuildPreference preference : optix::kAllBuildPreferences) {
     Scene posed = scene;
     std::vector<std::unique_ptr<RayTracer>> tracers;
     for (std::size_t p = 0; p < std::size(kAllUpdatePolicies); ++p) {
-      tracers.push_back(make_ray_tracer("optix"));
+      tracers.push_back(backends::make_ray_tracer("optix"));
       tracers.back()->build(posed, optix_options(preference));
     }
     for (const int frame : {17, 40}) {
@@ -111,11 +113,11 @@ TEST(OptixRayTracer, UpdatedGasHitsEqualRebuiltGasHitsAfterDeformation) {
         tracers[p]->update(posed, dirty, kAllUpdatePolicies[p]);
         per_policy.push_back(trace(*tracers[p], rays));
         EXPECT_EQ(compare_hits_off_edges(posed, rays, expected, per_policy.back()), "")
-            << optix_accel_name(preference) << " " << update_policy_name(kAllUpdatePolicies[p]) << " frame " << frame;
+            << optix::kBuildPreferenceNames.name_of(preference) << " " << update_policy_name(kAllUpdatePolicies[p]) << " frame " << frame;
       }
       static_assert(kAllUpdatePolicies[0] == UpdatePolicy::rebuild && kAllUpdatePolicies[1] == UpdatePolicy::refit);
       EXPECT_EQ(compare_hits_off_edges(posed, rays, per_policy[0], per_policy[1]), "")
-          << optix_accel_name(preference) << ": refitted vs rebuilt GASes, frame " << frame;
+          << optix::kBuildPreferenceNames.name_of(preference) << ": refitted vs rebuilt GASes, frame " << frame;
     }
     for (std::size_t p = 0; p < tracers.size(); ++p) {
       const RayTracerStats stats = tracers[p]->stats();
@@ -133,7 +135,7 @@ TEST(OptixRayTracer, UpdatedGasHitsEqualRebuiltGasHitsAfterDeformation) {
 TEST(OptixRayTracer, UpdateFollowsMovedInstances) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   tracer->build(scene, {});
   scene.instances[2].transform = glm::translate(scene.instances[2].transform, vec3(0.5f, -0.25f, 1.0f));
   scene.instances[0].transform = glm::translate(scene.instances[0].transform, vec3(0.0f, 0.3f, 0.0f));
@@ -145,7 +147,7 @@ TEST(OptixRayTracer, UpdateFollowsMovedInstances) {
 TEST(OptixRayTracer, MisuseIsAClearError) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   std::vector<accel::Hit> hits(1);
   const std::vector<accel::Ray> rays(1);
   EXPECT_NE(testing::error_of([&] { tracer->trace_closest(rays, hits); }).find("before build()"), std::string::npos);
@@ -172,7 +174,7 @@ TEST(OptixRayTracer, MisuseIsAClearError) {
 TEST(OptixRayTracer, DeviceTraceStopsAtTheGpuSideRayCount) {
   GLINT_SKIP_WITHOUT_OPTIX_GPU();
   const Scene scene = testing::make_instanced_scene();
-  const auto tracer = make_ray_tracer("optix");
+  const auto tracer = backends::make_ray_tracer("optix");
   tracer->build(scene, {});
   DeviceTracing& device = *tracer->device_tracing();
   const std::vector<accel::Ray> rays = random_rays(scene, 5000, 13);
@@ -208,7 +210,7 @@ TEST(OptixRayTracer, DeviceUpdateFollowsPositionsWrittenOnTheGpu) {
   Scene scene = testing::make_reduced_atrium();
   for (const UpdatePolicy policy : kAllUpdatePolicies) {
     Scene posed = scene;
-    const auto tracer = make_ray_tracer("optix");
+    const auto tracer = backends::make_ray_tracer("optix");
     tracer->build(posed, {});
     DeviceTracing& device = *tracer->device_tracing();
     SceneDeformers deformers(posed);

@@ -4,6 +4,7 @@
 // tests/render/visibility_gbuffer_test.cpp), the resolve then rebuilds the same G-buffer there, the
 // rays run through the pixel centres, and whole frames are nearly equal.
 #include "cuda/device_query.h"
+#include "backends/registry.h"
 #include "metrics/rmse_psnr.h"
 #include "render/frame_pipeline.h"
 #include "render/visibility_id_pass.h"
@@ -165,7 +166,7 @@ TEST_F(PrimaryRayPassTest, RaysRunThroughThePixelCentresFromNearToFar) {
   EXPECT_LT(worst_far, 1e-3f);
   // The hits are the tracer's closest hits of those rays.
   const std::span<const accel::Hit> hits = primary->hits();
-  const std::unique_ptr<rt::RayTracer> reference = rt::make_ray_tracer("cpu");
+  const std::unique_ptr<rt::RayTracer> reference = backends::make_ray_tracer("cpu");
   reference->build(scene, {});
   std::vector<accel::Hit> expected(rays.size());
   reference->trace_closest(rays, expected);

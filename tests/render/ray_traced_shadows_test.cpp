@@ -3,6 +3,7 @@
 // occlusion of those rays, the backends agree pixel for pixel, the shared tracer follows deforming
 // meshes, and hybrid differs from rt on a bounded fraction of an atrium-simple frame.
 #include "cuda/device_query.h"
+#include "backends/registry.h"
 #include "metrics/rmse_psnr.h"
 #include "rt/hit_shadow_ray.h"
 #include "render/frame_pipeline.h"
@@ -116,7 +117,7 @@ TEST_F(RayTracedShadowsTest, MaskIsTheOcclusionOfItsRays) {
     FramePipeline pipeline(atrium.scene, kWidth, kHeight, shadow_settings(ShadowMethod::rt, backend));
     pipeline.render(atrium.frame);
     const std::vector<accel::Ray> rays(pipeline.shadow_rays()->rays().begin(), pipeline.shadow_rays()->rays().end());
-    const std::unique_ptr<rt::RayTracer> reference = rt::make_ray_tracer(std::string(backend) == "cpu" ? "embree" : "cpu");
+    const std::unique_ptr<rt::RayTracer> reference = backends::make_ray_tracer(std::string(backend) == "cpu" ? "embree" : "cpu");
     reference->build(atrium.scene, {});
     const std::vector<std::uint8_t> occluded = testing::trace_occluded(*reference, rays);
     const std::vector<std::uint8_t> mask = mask_in_ray_order(pipeline);
@@ -217,7 +218,7 @@ TEST_F(RayTracedShadowsTest, ReflectionHitsCastShadowRays) {
   const RayTracedReflections& reflections = *pipeline.ray_traced_reflections();
   const std::vector<accel::Ray> rays(reflections.ray_buffers().rays(count).begin(),
                                      reflections.ray_buffers().rays(count).end());
-  const std::unique_ptr<rt::RayTracer> reference = rt::make_ray_tracer("embree");
+  const std::unique_ptr<rt::RayTracer> reference = backends::make_ray_tracer("embree");
   reference->build(atrium.scene, {});
   const std::vector<accel::Hit> hits = testing::trace(*reference, rays);
   const OcclusionBuffers& answers = reflections.hit_shadow_rays()->answers();

@@ -1,6 +1,7 @@
 // InstanceSubsetTracer (glint bench's Fig. 10): rays see exactly the chosen instances, before and
 // after the deformable meshes moved, and hits name the full scene's instances.
 #include "rt/instance_subset_tracer.h"
+#include "backends/registry.h"
 
 #include "rt/ray_tracer_check.h"
 #include "scene/sine_deformer.h"
@@ -43,7 +44,7 @@ TEST(InstanceSubsetTracer, SeesOnlyTheChosenInstancesBeforeAndAfterDeforming) {
     for (const UpdatePolicy policy : {UpdatePolicy::rebuild, UpdatePolicy::refit}) {
       Scene scene = testing::make_instanced_scene();
       const std::vector<std::uint32_t> instances = deformable_instances(scene);
-      InstanceSubsetTracer tracer(make_ray_tracer(backend), instances);
+      InstanceSubsetTracer tracer(backends::make_ray_tracer(backend), instances);
       tracer.build(scene, {});
       EXPECT_EQ(tracer.name(), backend);
       EXPECT_EQ(tracer.subset_scene().instances.size(), instances.size());
@@ -68,19 +69,19 @@ TEST(InstanceSubsetTracer, SeesOnlyTheChosenInstancesBeforeAndAfterDeforming) {
 TEST(InstanceSubsetTracer, KeepsTheChosenOrderWhenRenumberingHits) {
   const Scene scene = testing::make_instanced_scene();
   const std::vector<std::uint32_t> instances = {3, 0};  // a sheet, then the floor: not ascending
-  InstanceSubsetTracer tracer(make_ray_tracer("cpu"), instances);
+  InstanceSubsetTracer tracer(backends::make_ray_tracer("cpu"), instances);
   tracer.build(scene, {});
   const std::vector<accel::Ray> rays = random_rays(scene, 2000, 5);
   EXPECT_EQ(compare_hits(scene, rays, subset_reference(scene, instances, rays), trace(tracer, rays)), "");
 }
 
 TEST(InstanceSubsetTracer, RejectsEmptyRepeatedAndOutOfRangeInstances) {
-  EXPECT_NE(testing::error_of([] { InstanceSubsetTracer(make_ray_tracer("cpu"), {}); }).find("no instances"),
+  EXPECT_NE(testing::error_of([] { InstanceSubsetTracer(backends::make_ray_tracer("cpu"), {}); }).find("no instances"),
             std::string::npos);
-  EXPECT_NE(testing::error_of([] { InstanceSubsetTracer(make_ray_tracer("cpu"), {1, 2, 1}); }).find("instance 1 is listed twice"),
+  EXPECT_NE(testing::error_of([] { InstanceSubsetTracer(backends::make_ray_tracer("cpu"), {1, 2, 1}); }).find("instance 1 is listed twice"),
             std::string::npos);
   const Scene scene = testing::make_instanced_scene();
-  InstanceSubsetTracer tracer(make_ray_tracer("cpu"), {0, 99});
+  InstanceSubsetTracer tracer(backends::make_ray_tracer("cpu"), {0, 99});
   EXPECT_NE(testing::error_of([&] { tracer.build(scene, {}); }).find("instance 99 out of range"), std::string::npos);
 }
 

@@ -3,6 +3,7 @@
 // just after a triangle, starting just past one, and aimed exactly at shared edges and vertices; and
 // against each backend's own closest-hit query, ray by ray; before and after deformation.
 #include "rt/ray_tracer.h"
+#include "backends/registry.h"
 
 #include "accel/builder.h"
 #include "accel/traverse.h"
@@ -68,7 +69,7 @@ TEST(RayTracerOcclusion, EveryCpuBackendBuilderAndTraversalEqualsBruteForce) {
   ASSERT_GT(count_ones(expected), rays.size() / 4);
   ASSERT_LT(count_ones(expected), rays.size() * 3 / 4);
   for (const CpuConfig& config : every_cpu_config()) {
-    const auto tracer = make_ray_tracer(config.backend);
+    const auto tracer = backends::make_ray_tracer(config.backend);
     tracer->build(scene, config.options);
     const std::vector<uint8_t> occluded = trace_occluded(*tracer, rays);
     EXPECT_EQ(compare_occluded(rays, expected, occluded), "") << config.label;
@@ -97,7 +98,7 @@ TEST(RayTracerOcclusion, RaysEndingBeforeOrStartingPastAHitAreDecidedByTheInterv
   EXPECT_GT(free_before, probes.size() / 6);
   EXPECT_GT(free_past, probes.size() / 30);
   for (const CpuConfig& config : every_cpu_config()) {
-    const auto tracer = make_ray_tracer(config.backend);
+    const auto tracer = backends::make_ray_tracer(config.backend);
     tracer->build(scene, config.options);
     EXPECT_EQ(compare_occluded(probes, expected, trace_occluded(*tracer, probes)), "") << config.label;
   }
@@ -113,7 +114,7 @@ TEST(RayTracerOcclusion, RaysAimedAtSharedEdgesAndVerticesAreAlwaysOccluded) {
     const std::vector<uint8_t> all(rays.size(), 1);
     ASSERT_EQ(compare_occluded(rays, all, brute_force_occluded(scene, rays)), "") << scene.name << " brute force";
     for (const CpuConfig& config : every_cpu_config()) {
-      const auto tracer = make_ray_tracer(config.backend);
+      const auto tracer = backends::make_ray_tracer(config.backend);
       tracer->build(scene, config.options);
       EXPECT_EQ(compare_occluded(rays, all, trace_occluded(*tracer, rays)), "") << scene.name << " " << config.label;
     }
@@ -130,7 +131,7 @@ TEST(RayTracerOcclusion, ReflectionRaysOnReducedAtriumAgreeWithClosestHits) {
   const std::vector<uint8_t> expected = brute_force_occluded(scene, checked);
   for (const CpuConfig& config : every_cpu_config()) {
     if (config.options.builder == accel::BvhBuilder::none) continue;  // one leaf: slow on 20k rays, covered above
-    const auto tracer = make_ray_tracer(config.backend);
+    const auto tracer = backends::make_ray_tracer(config.backend);
     tracer->build(scene, config.options);
     const std::vector<uint8_t> occluded = trace_occluded(*tracer, rays);
     const size_t ones = count_ones(occluded);
@@ -153,7 +154,7 @@ TEST(RayTracerOcclusion, FollowsDeformationWithEveryUpdatePolicy) {
     for (UpdatePolicy policy : kAllUpdatePolicies) {
       if (config.backend == "cpu" && builder == accel::BvhBuilder::sbvh && policy != UpdatePolicy::rebuild) continue;
       Scene scene = testing::make_instanced_scene();
-      const auto tracer = make_ray_tracer(config.backend);
+      const auto tracer = backends::make_ray_tracer(config.backend);
       tracer->build(scene, config.options);
       const std::vector<accel::Ray> rays = occlusion_test_rays(scene, 800, 5);
       const std::vector<uint8_t> rest = brute_force_occluded(scene, rays);
@@ -177,7 +178,7 @@ TEST(RayTracerOcclusion, InstanceSubsetTracerAnswersForItsInstancesOnly) {
   const Scene scene = testing::make_instanced_scene();
   const std::vector<uint32_t> chosen = deformable_instances(scene);
   ASSERT_FALSE(chosen.empty());
-  InstanceSubsetTracer tracer(make_ray_tracer("cpu"), chosen);
+  InstanceSubsetTracer tracer(backends::make_ray_tracer("cpu"), chosen);
   tracer.build(scene, {});
   const std::vector<accel::Ray> rays = occlusion_test_rays(tracer.subset_scene(), 1000, 3);
   const std::vector<uint8_t> expected = brute_force_occluded(tracer.subset_scene(), rays);
@@ -190,7 +191,7 @@ TEST(RayTracerOcclusion, InstanceSubsetTracerAnswersForItsInstancesOnly) {
 TEST(RayTracerOcclusion, MisuseIsAClearError) {
   const Scene scene = testing::make_instanced_scene();
   for (const CpuConfig& config : every_cpu_config()) {
-    const auto tracer = make_ray_tracer(config.backend);
+    const auto tracer = backends::make_ray_tracer(config.backend);
     const std::vector<accel::Ray> rays(3);
     std::vector<uint8_t> occluded(3);
     EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, occluded); }).find("trace_any() before build()"),

@@ -1,6 +1,7 @@
 // Both RayTracer backends against brute force over the flattened world triangles, before and after
 // the deformable meshes moved, for every update policy, and against each other.
 #include "rt/ray_tracer.h"
+#include "backends/registry.h"
 
 #include "rt/ray_tracer_check.h"
 #include "scene/sine_deformer.h"
@@ -26,7 +27,7 @@ TEST(RayTracer, BackendsEqualBruteForceOnAnInstancedScene) {
   for (const accel::Hit& hit : expected) hit_count += hit.valid() ? 1 : 0;
   ASSERT_GT(hit_count, rays.size() / 4) << "the rays must mostly hit something to test anything";
   for (std::string_view backend : kBackends) {
-    const auto tracer = make_ray_tracer(backend);
+    const auto tracer = backends::make_ray_tracer(backend);
     EXPECT_EQ(tracer->name(), backend);
     tracer->build(scene, {});
     EXPECT_EQ(compare_hits(scene, rays, expected, trace(*tracer, rays)), "") << backend;
@@ -43,7 +44,7 @@ TEST(RayTracer, CpuBackendEqualsBruteForceWithEveryBuilder) {
   const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
   for (accel::BvhBuilder builder : accel::kAllBvhBuilders) {
     for (bool wide : {true, false}) {
-      const auto tracer = make_ray_tracer("cpu");
+      const auto tracer = backends::make_ray_tracer("cpu");
       AccelOptions options;
       options.builder = builder;
       options.wide_traversal = wide;
@@ -61,7 +62,7 @@ TEST(RayTracer, BackendsEqualBruteForceAndEachOtherOnReducedAtrium) {
   const std::vector<accel::Hit> expected = brute_force_hits(scene, rays);
   std::vector<std::vector<accel::Hit>> per_backend;
   for (std::string_view backend : kBackends) {
-    const auto tracer = make_ray_tracer(backend);
+    const auto tracer = backends::make_ray_tracer(backend);
     tracer->build(scene, {});
     per_backend.push_back(trace(*tracer, rays));
     EXPECT_EQ(compare_hits(scene, rays, expected, per_backend.back()), "") << backend;
@@ -73,7 +74,7 @@ TEST(RayTracer, BackendsEqualBruteForceAndEachOtherOnReducedAtrium) {
 // (two frames), so a second update on top of a refit is covered too.
 void check_updates(Scene scene, std::string_view backend, UpdatePolicy policy, size_t ray_count,
                    const AccelOptions& options = {}) {
-  const auto tracer = make_ray_tracer(backend);
+  const auto tracer = backends::make_ray_tracer(backend);
   tracer->build(scene, options);
   SceneDeformers deformers(scene);
   const std::vector<accel::Ray> rays = random_rays(scene, ray_count, 5);
@@ -120,7 +121,7 @@ TEST(RayTracer, UpdateFollowsMovedInstances) {
   Scene scene = testing::make_instanced_scene();
   for (const auto& [backend, wide] : {std::pair{"cpu", true}, std::pair{"cpu", false}, std::pair{"embree", true}}) {
     Scene moved = scene;
-    const auto tracer = make_ray_tracer(backend);
+    const auto tracer = backends::make_ray_tracer(backend);
     AccelOptions options;
     options.wide_traversal = wide;
     tracer->build(moved, options);
@@ -138,7 +139,7 @@ TEST(RayTracer, NamesRoundTripAndUnknownNamesAreClearErrors) {
   const std::string policy_error = testing::error_of([] { (void)parse_update_policy("sometimes"); });
   EXPECT_NE(policy_error.find("unknown update policy \"sometimes\""), std::string::npos) << policy_error;
   EXPECT_NE(policy_error.find("rebuild, refit, auto"), std::string::npos) << policy_error;
-  const std::string backend_error = testing::error_of([] { (void)make_ray_tracer("vulkan"); });
+  const std::string backend_error = testing::error_of([] { (void)backends::make_ray_tracer("vulkan"); });
   EXPECT_NE(backend_error.find("\"vulkan\""), std::string::npos) << backend_error;
   EXPECT_NE(backend_error.find("cpu, embree"), std::string::npos) << backend_error;
 }
@@ -146,7 +147,7 @@ TEST(RayTracer, NamesRoundTripAndUnknownNamesAreClearErrors) {
 TEST(RayTracer, MisuseIsAClearError) {
   Scene scene = testing::make_instanced_scene();
   for (std::string_view backend : kBackends) {
-    const auto tracer = make_ray_tracer(backend);
+    const auto tracer = backends::make_ray_tracer(backend);
     std::vector<accel::Ray> rays(3);
     std::vector<accel::Hit> hits(3);
     EXPECT_NE(testing::error_of([&] { tracer->trace_closest(rays, hits); }).find("before build()"), std::string::npos);

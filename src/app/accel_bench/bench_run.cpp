@@ -202,21 +202,6 @@ void run_deform(Scene& scene, const BenchOptions& options, const std::vector<Can
 
 }  // namespace
 
-const char* ray_kind_name(RayKind kind) {
-  switch (kind) {
-    case RayKind::primary: return "primary";
-    case RayKind::reflection: return "reflection";
-    case RayKind::random: return "random";
-  }
-  return "?";
-}
-
-RayKind parse_ray_kind(std::string_view name) {
-  for (RayKind kind : {RayKind::primary, RayKind::reflection, RayKind::random})
-    if (name == ray_kind_name(kind)) return kind;
-  fail("accel-bench: unknown ray kind \"{}\" (known: primary, reflection, random)", name);
-}
-
 BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
   if (options.structures.empty()) fail("accel-bench: no structures to compare");
   if (options.timed_runs < 1) fail("accel-bench: timed runs must be at least 1, not {}", options.timed_runs);

@@ -3,6 +3,7 @@
 // every structure over the scene's world triangles, check their hits against the first one, time
 // their closest-hit queries, and compare rebuild with refit on the deforming meshes.
 #include "accel/ray.h"
+#include "core/enum_names.h"
 #include "scene/scene.h"
 
 #include <cstdint>
@@ -16,9 +17,12 @@ namespace glint::accel_bench {
 
 enum class RayKind { primary, reflection, random };
 
-const char* ray_kind_name(RayKind kind);
+inline constexpr EnumNames<RayKind, 3> kRayKindNames{
+    "ray kind", {{RayKind::primary, "primary"}, {RayKind::reflection, "reflection"}, {RayKind::random, "random"}}};
+
+inline std::string_view ray_kind_name(RayKind kind) { return kRayKindNames.name_of(kind); }
 // "primary", "reflection", "random"; glint::Error otherwise.
-RayKind parse_ray_kind(std::string_view name);
+inline RayKind parse_ray_kind(std::string_view name) { return kRayKindNames.parse(name); }
 
 struct BenchOptions {
   // Structures by candidate_menu() name, in this order; the first one traced is the reference.

@@ -1,8 +1,8 @@
 #include "app/accel_bench/candidates_optix.h"
 
+#include "backends/registry.h"
 #include "core/error.h"
-#include "rt/gas_build_preference.h"
-#include "rt/ray_tracer.h"
+#include "optix/build_preference.h"
 #if GLINT_HAVE_OPTIX
 #include "optix/mesh_tracer.h"
 #endif
@@ -15,10 +15,10 @@ namespace {
 #if GLINT_HAVE_OPTIX
 // Build and refit report the OptiX GAS's own milliseconds; the geometry upload is not timed (glint's
 // CPU builders read host memory in place). Nodes and SAH are unknown: OptiX hides its nodes.
-Candidate optix_candidate(rt::OptixBuildPreference preference) {
+Candidate optix_candidate(optix::BuildPreference preference) {
   auto tracer = std::make_shared<optix::OptixMeshTracer>(preference);
   Candidate candidate;
-  candidate.name = std::string(rt::optix_accel_name(preference));
+  candidate.name = std::string(optix::kBuildPreferenceNames.name_of(preference));
   candidate.build = [tracer](const accel::TriangleMesh& mesh) { return tracer->build(mesh); };
   candidate.refit = [tracer](const accel::TriangleMesh& mesh) -> std::optional<double> { return tracer->refit(mesh); };
   candidate.trace_closest_timed = [tracer](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
@@ -39,10 +39,7 @@ Candidate optix_candidate(rt::OptixBuildPreference preference) {
 }  // namespace
 
 std::vector<std::string> optix_candidate_names() {
-  std::vector<std::string> names;
-  for (const rt::OptixBuildPreference preference : rt::kAllOptixBuildPreferences)
-    names.emplace_back(rt::optix_accel_name(preference));
-  return names;
+  return optix::kBuildPreferenceNames.names();
 }
 
 bool optix_candidates_built() { return GLINT_HAVE_OPTIX != 0; }
@@ -50,13 +47,14 @@ bool optix_candidates_built() { return GLINT_HAVE_OPTIX != 0; }
 std::vector<CandidateEntry> optix_candidate_menu() {
   std::vector<CandidateEntry> menu;
 #if GLINT_HAVE_OPTIX
-  for (const rt::OptixBuildPreference preference : rt::kAllOptixBuildPreferences)
-    menu.push_back({std::string(rt::optix_accel_name(preference)), [preference] { return optix_candidate(preference); }});
+  for (const optix::BuildPreference preference : optix::kAllBuildPreferences)
+    menu.push_back({std::string(optix::kBuildPreferenceNames.name_of(preference)),
+                    [preference] { return optix_candidate(preference); }});
 #else
   // Known names in every build; making one says how to enable OptiX.
   for (const std::string& name : optix_candidate_names())
     menu.push_back({name, []() -> Candidate {
-                      rt::check_backend_built("optix");
+                      backends::check_backend_built("optix");
                       return {};
                     }});
 #endif

@@ -18,7 +18,7 @@ bool optix_candidates_built();
 
 // One entry per optix_candidate_names() name. Making a candidate creates an OptiX context: glint::Error
 // (one line) without a CUDA GPU or a usable OptiX driver. In a build without OptiX making one throws
-// the line saying how to enable it (rt::check_backend_built).
+// the line saying how to enable it (backends::check_backend_built).
 std::vector<CandidateEntry> optix_candidate_menu();
 
 }  // namespace glint::accel_bench

@@ -41,7 +41,7 @@ nlohmann::json report_json(const BenchReport& report, const MachineInfo& machine
                 {"triangles", report.scene_triangles},
                 {"vertices", report.scene_vertices},
                 {"instances", report.instances}};
-  j["rays"] = {{"kind", ray_kind_name(report.ray_kind)}, {"frames", report.frames}, {"width", report.width},
+  j["rays"] = {{"kind", std::string(ray_kind_name(report.ray_kind))}, {"frames", report.frames}, {"width", report.width},
                {"height", report.height}, {"count", report.ray_count}, {"hits", report.ray_hits},
                {"reference", report.reference}};
   j["build_runs"] = report.build_runs;

@@ -1,5 +1,6 @@
 #include "app/bench/paper_matrix.h"
 
+#include "backends/registry.h"
 #include "core/error.h"
 #include "rt/blas_structure.h"
 
@@ -98,14 +99,10 @@ private:
 
 }  // namespace
 
-bool backend_takes_accel(const std::string& backend) {
-  return backend == "cpu" || backend == "cuda" || backend == "gl";
-}
-
 std::vector<Structure> structures_of(const std::vector<std::string>& backends, const std::vector<std::string>& accels) {
   std::vector<Structure> structures;
   for (const std::string& backend : backends) {
-    if (!backend_takes_accel(backend)) {
+    if (!backends::find_backend(backend).takes_glint_builders) {
       structures.push_back({backend, ""});
       continue;
     }

@@ -27,14 +27,10 @@ inline constexpr int kPaperQualityFrames[] = {1800, 2100, 2300, 4400};
 
 // What rays are traced by, as the figures' legends name it: "cpu-sah", "embree", "optix".
 struct Structure {
-  std::string backend;  // rt::make_ray_tracer name
-  std::string accel;    // accel::builder_name for backends with glint's builders; "" otherwise
+  std::string backend;  // backends::make_ray_tracer name
+  std::string accel;    // glint's structure for backends that take glint's builders; "" otherwise
   std::string label() const { return accel.empty() ? backend : backend + "-" + accel; }
 };
-
-// Backends whose BLASes are built by glint's builders (--accels applies); the others (embree, optix)
-// build their own structures and make one structure each.
-bool backend_takes_accel(const std::string& backend);
 
 enum class CellKind { frame_times, quality };
 
@@ -59,7 +55,8 @@ struct MatrixOptions {
   std::map<std::string, std::string> unavailable_backends;  // backend -> why it cannot run here
 };
 
-// The structures of `backends` x `accels` (accels apply to backend_takes_accel backends only).
+// The structures of `backends` x `accels`: accels apply to the backends that take glint's builders
+// (backends::Backend::takes_glint_builders); the others build their own and make one structure each.
 std::vector<Structure> structures_of(const std::vector<std::string>& backends, const std::vector<std::string>& accels);
 
 // The measured frames of a frame-times cell: 0, stride, 2 stride, ... below min(limit,
