@@ -481,6 +481,7 @@ PassOutput run_pass(const Scene& scene, const FrameState& state, int width, int 
   const GlBuffer buffer = create_buffer(sizeof(FrameConstants), &constants);
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, buffer.id());
   pass.run();
+  pass.write_depth();  // the depth target is written on demand
   return {read_visibility_ids(targets.visibility_id.id(), width, height),
           read_texture_rgbaf(targets.depth.id(), kDepthFormat, width, height), pass.read_stats()};
 }
