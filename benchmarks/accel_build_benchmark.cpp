@@ -22,13 +22,13 @@
 #include "accel/lbvh_layout.h"
 #include "accel/morton.h"
 #include "accel/primitive_bounds.h"
+#include "core/stopwatch.h"
 #include "rt/scene_geometry.h"
 #include "scene/presets.h"
 
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -58,32 +58,23 @@ const BuildFixture& fixture() {
   return instance;
 }
 
-using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point& start) {
-  const Clock::time_point now = Clock::now();
-  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
-  start = now;
-  return ms;
-}
-
 void LbvhPhases(benchmark::State& state) {
   const TriangleMesh& mesh = fixture().mesh;
   const BuildOptions options;
   double boxes_ms = 0, morton_ms = 0, tree_ms = 0, layout_ms = 0;
   uint32_t bits = 0;
   for (auto _ : state) {
-    auto start = Clock::now();
+    Stopwatch watch;
     const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
     const BuildInput input = bounds.input();
-    boxes_ms += ms_since(start);
+    boxes_ms += watch.lap_ms();
     MortonOrder order = sort_by_morton(input.centroids);
     bits = order.bits;
-    morton_ms += ms_since(start);
+    morton_ms += watch.lap_ms();
     const detail::LbvhSweep sweep = detail::sweep_lbvh(input, order, options);
-    tree_ms += ms_since(start);
+    tree_ms += watch.lap_ms();
     Bvh bvh = detail::lay_out_lbvh(sweep, std::move(order.prims), "lbvh");
-    layout_ms += ms_since(start);
+    layout_ms += watch.lap_ms();
     benchmark::DoNotOptimize(bvh.nodes.data());
   }
   const auto per_build = [&](double total) {
@@ -102,9 +93,9 @@ BENCHMARK(LbvhPhases)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0
 void Build(benchmark::State& state, BvhBuilder builder) {
   const TriangleMesh& mesh = fixture().mesh;
   for (auto _ : state) {
-    auto start = Clock::now();
+    Stopwatch watch;
     Bvh bvh = build_bvh(builder, mesh);
-    state.SetIterationTime(ms_since(start) * 1e-3);
+    state.SetIterationTime(watch.lap_ms() * 1e-3);
     benchmark::DoNotOptimize(bvh.nodes.data());
   }
   state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(mesh.triangle_count) * 1e-6 *
@@ -119,9 +110,9 @@ void Embree(benchmark::State& state, EmbreeQuality quality) {
   const TriangleMesh& mesh = fixture().mesh;
   const EmbreeDevice device;
   for (auto _ : state) {
-    auto start = Clock::now();
+    Stopwatch watch;
     EmbreeScene scene(device, mesh, quality);
-    state.SetIterationTime(ms_since(start) * 1e-3);
+    state.SetIterationTime(watch.lap_ms() * 1e-3);
     benchmark::DoNotOptimize(scene.triangle_count());
   }
   state.counters["Mprims/s"] = benchmark::Counter(static_cast<double>(mesh.triangle_count) * 1e-6 *

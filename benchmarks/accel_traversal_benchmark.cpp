@@ -18,6 +18,7 @@
 #include "accel/trace.h"
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_trace.h"
+#include "core/stopwatch.h"
 #include "scene/camera_path.h"
 #include "scene/presets.h"
 
@@ -30,7 +31,6 @@
 #include <embree3/rtcore.h>
 #endif
 
-#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <cstdlib>
@@ -164,9 +164,9 @@ struct Fixture {
                  wide8.nodes.size(), wide8.leaf_count, wide8.blocks.size(), wide8.depth, wide8.collapse_ms,
                  std::string(simd_path_name(wide_simd_path())).c_str());
 #if GLINT_BENCH_EMBREE
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     embree.emplace(soup);
-    embree_build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    embree_build_ms = watch.elapsed_ms();
     std::fprintf(stderr, "embree medium build %.1f ms\n", embree_build_ms);
 #endif
     make_rays(scene);

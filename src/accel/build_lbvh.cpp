@@ -4,7 +4,6 @@
 #include "accel/lbvh_layout.h"
 #include "accel/radix_tree_sweep.h"
 
-#include <chrono>
 #include <span>
 #include <utility>
 
@@ -74,7 +73,6 @@ BinaryTree build_lbvh_tree(const BuildInput& input) { return build_karras_tree(i
 }  // namespace detail
 
 Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "lbvh");
   MortonOrder order = sort_by_morton(input.centroids);
   const detail::LbvhSweep sweep = detail::sweep_lbvh(input, order, options);
@@ -88,7 +86,6 @@ Bvh build_lbvh(const BuildInput& input, const BuildOptions& options) {
   } else {
     bvh = detail::lay_out_lbvh(sweep, std::move(order.prims), "lbvh");
   }
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

@@ -2,13 +2,11 @@
 
 #include "core/error.h"
 
-#include <chrono>
 #include <numeric>
 
 namespace glint::accel {
 
 Bvh build_none(const BuildInput& input, const BuildOptions& /*options*/) {
-  const auto start = std::chrono::steady_clock::now();
   if (input.boxes.size() != input.centroids.size())
     fail("accel: build_none: {} boxes but {} centroids", input.boxes.size(), input.centroids.size());
   if (input.boxes.size() >= (size_t{1} << 31))
@@ -28,7 +26,6 @@ Bvh build_none(const BuildInput& input, const BuildOptions& /*options*/) {
     bvh.nodes.push_back(root);
     bvh.depth = 1;
   }
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

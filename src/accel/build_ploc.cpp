@@ -10,7 +10,6 @@
 #include <tbb/parallel_scan.h>
 
 #include <algorithm>
-#include <chrono>
 
 namespace glint::accel {
 namespace {
@@ -154,12 +153,10 @@ BinaryTree build_ploc_tree(const BuildInput& input, uint32_t radius) {
 }  // namespace
 
 Bvh build_ploc(const BuildInput& input, const BuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "ploc");
   if (options.ploc_radius < 1) fail("accel: build_ploc: ploc_radius must be at least 1, got {}", options.ploc_radius);
   BinaryTree tree = build_ploc_tree(input, options.ploc_radius);
   Bvh bvh = detail::flatten_tree(tree, options, "ploc");
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -434,8 +433,7 @@ void depth_first_order(const std::vector<BvhNode>& nodes, const std::vector<uint
   }
 }
 
-Bvh build(const BuildInput& input, const TriangleMesh* mesh, const BuildOptions& options, const SbvhOptions& sbvh,
-          std::chrono::steady_clock::time_point start) {
+Bvh build(const BuildInput& input, const TriangleMesh* mesh, const BuildOptions& options, const SbvhOptions& sbvh) {
   if (input.boxes.size() != input.centroids.size())
     fail("accel: build_sbvh: {} boxes but {} centroids", input.boxes.size(), input.centroids.size());
   if (input.boxes.size() >= (size_t{1} << 30))
@@ -470,20 +468,18 @@ Bvh build(const BuildInput& input, const TriangleMesh* mesh, const BuildOptions&
     depth_first_order(nodes, slots, bvh);
     bvh.depth = builder.depth.load();
   }
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 
 }  // namespace
 
 Bvh build_sbvh(const TriangleMesh& mesh, const BuildOptions& options, const SbvhOptions& sbvh) {
-  const auto start = std::chrono::steady_clock::now();
   const PrimitiveBounds bounds = triangle_bounds(mesh);
-  return build(bounds.input(), &mesh, options, sbvh, start);
+  return build(bounds.input(), &mesh, options, sbvh);
 }
 
 Bvh build_sbvh(const BuildInput& input, const BuildOptions& options, const SbvhOptions& sbvh) {
-  return build(input, nullptr, options, sbvh, std::chrono::steady_clock::now());
+  return build(input, nullptr, options, sbvh);
 }
 
 void validate_sbvh_references(const Bvh& bvh, const TriangleMesh& mesh, float reference_budget) {

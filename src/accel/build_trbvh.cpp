@@ -6,7 +6,6 @@
 #include <array>
 #include <atomic>
 #include <bit>
-#include <chrono>
 #include <limits>
 #include <span>
 
@@ -155,7 +154,6 @@ uint32_t restructure_treelets(BinaryTree& tree, const BuildOptions& options, uin
 }  // namespace detail
 
 Bvh build_trbvh(const BuildInput& input, const BuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
   detail::check_build_input(input, options, "trbvh");
   detail::BinaryTree tree = detail::build_lbvh_tree(input);
   // Later rounds only revisit larger subtrees (the threshold doubles every round): measured on the
@@ -165,7 +163,6 @@ Bvh build_trbvh(const BuildInput& input, const BuildOptions& options) {
   for (uint32_t round = 0; round < options.treelet_rounds; ++round, min_prims *= 2)
     if (detail::restructure_treelets(tree, options, min_prims) == 0) break;
   Bvh bvh = detail::flatten_tree(tree, options, "trbvh");
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

@@ -9,14 +9,17 @@
 #include "accel/build_trbvh.h"
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 
 
-#include <chrono>
 #include <string>
 
 namespace glint::accel {
 
-Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
+namespace {
+
+// The builders return the structure only; build_bvh times them, once.
+Bvh build_untimed(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
   switch (builder) {
     case BvhBuilder::none: return build_none(input, options);
     case BvhBuilder::median: return build_median(input, options);
@@ -29,12 +32,25 @@ Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& o
   fail("accel: invalid BvhBuilder value {}", static_cast<int>(builder));
 }
 
+}  // namespace
+
+Bvh build_bvh(BvhBuilder builder, const BuildInput& input, const BuildOptions& options) {
+  const Stopwatch watch;
+  Bvh bvh = build_untimed(builder, input, options);
+  bvh.build_ms = watch.elapsed_ms();
+  return bvh;
+}
+
 Bvh build_bvh(BvhBuilder builder, const TriangleMesh& mesh, const BuildOptions& options) {
-  if (builder == BvhBuilder::sbvh) return build_sbvh(mesh, options);
-  const auto start = std::chrono::steady_clock::now();
-  const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
-  Bvh bvh = build_bvh(builder, bounds.input(), options);
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const Stopwatch watch;
+  Bvh bvh;
+  if (builder == BvhBuilder::sbvh) {
+    bvh = build_sbvh(mesh, options);
+  } else {
+    const detail::ScratchBounds bounds = detail::scratch_triangle_bounds(mesh);
+    bvh = build_untimed(builder, bounds.input(), options);
+  }
+  bvh.build_ms = watch.elapsed_ms();
   return bvh;
 }
 

@@ -19,7 +19,7 @@ struct Bvh {
   bool refittable = true;
   uint32_t depth = 0;       // levels, root = 1; at most kMaxBvhDepth
   std::string builder;      // "none", "median", "sah", ...
-  double build_ms = 0.0;    // wall time of the build (steady_clock), set by the builder
+  double build_ms = 0.0;    // wall time of the build, set by build_bvh (builder.h), which times the builders
 
   BvhView view() const {
     return {nodes.data(), prim_indices.data(), static_cast<uint32_t>(nodes.size())};

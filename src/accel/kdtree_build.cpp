@@ -8,11 +8,11 @@
 
 #include "accel/primitive_bounds.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 
 #include <tbb/task_group.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -275,7 +275,7 @@ uint32_t kdtree_depth_limit(uint32_t triangle_count, const KdTreeOptions& option
 }
 
 KdTree build_kdtree(const TriangleMesh& mesh, const KdTreeOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   if (mesh.triangle_count > kMaxKdIndex)
     fail("accel: build_kdtree: {} triangles, at most 2^30 - 1", mesh.triangle_count);
   if (!(options.traversal_cost > 0.0f && options.intersection_cost > 0.0f))
@@ -303,7 +303,7 @@ KdTree build_kdtree(const TriangleMesh& mesh, const KdTreeOptions& options) {
     flatten(*top, tree);
     tree.depth = deepest;
   }
-  tree.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  tree.build_ms = watch.elapsed_ms();
   return tree;
 }
 

@@ -3,11 +3,11 @@
 #include "accel/refit.h"
 #include "accel/trace.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "core/math.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include <chrono>
 #include <cmath>
 
 namespace glint::accel {
@@ -63,7 +63,7 @@ Tlas build_tlas(std::span<const Blas> blases, std::vector<Instance> instances, B
 
 Tlas build_tlas(std::span<const Aabb> blas_boxes, std::vector<Instance> instances, BvhBuilder builder,
                 const BuildOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   Tlas tlas;
   tlas.instances = std::move(instances);
   const std::vector<Aabb> boxes = instance_world_boxes(blas_boxes, tlas.instances);
@@ -73,7 +73,7 @@ Tlas build_tlas(std::span<const Aabb> blas_boxes, std::vector<Instance> instance
     centroids[i] = boxes[i].empty() ? vec3(tlas.instances[i].object_to_world[3]) : boxes[i].center();
   }
   tlas.bvh = build_bvh(builder, BuildInput{boxes, centroids}, options);
-  tlas.bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  tlas.bvh.build_ms = watch.elapsed_ms();
   return tlas;
 }
 

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <type_traits>
 
 namespace glint::accel::detail {
@@ -171,7 +170,6 @@ Split object_median_split(const SplitContext& context, const PrimRange& range) {
 }
 
 Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const std::string& name, SplitPolicy policy) {
-  const auto start = std::chrono::steady_clock::now();
   if (input.boxes.size() != input.centroids.size())
     fail("accel: build_{}: {} boxes but {} centroids", name, input.boxes.size(), input.centroids.size());
   if (input.boxes.size() >= (size_t{1} << 31))
@@ -198,7 +196,6 @@ Bvh build_top_down(const BuildInput& input, const BuildOptions& options, const s
     const Renumberer renumberer{nodes.data(), bvh.nodes.data(), std::max(options.parallel_threshold, 2u)};
     renumberer.emit(0, 0, 1);
   }
-  bvh.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return bvh;
 }
 

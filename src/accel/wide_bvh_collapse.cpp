@@ -3,12 +3,12 @@
 #include "accel/primitive_bounds.h"
 #include "accel/ray.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 namespace glint::accel {
@@ -138,7 +138,7 @@ private:
 
 template <int N>
 WideBvh<N> collapse_to_wide(const Bvh& bvh, const TriangleMesh& mesh, const WideCollapseOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   // Leaves of a spatial-split BVH (sbvh) hold clipped references: a triangle may sit in several
   // leaves, and its gathered copy would be the whole triangle, not the clipped part the leaf box
   // bounds. Wide BVHs are made from builders without spatial splits.
@@ -160,7 +160,7 @@ WideBvh<N> collapse_to_wide(const Bvh& bvh, const TriangleMesh& mesh, const Wide
     wide.bounds = bvh.bounds();
     gather_wide_triangles(wide, mesh);
   }
-  wide.collapse_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  wide.collapse_ms = watch.elapsed_ms();
   return wide;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/process_memory.h"
+#include "core/stopwatch.h"
 #include "cuda/device_query.h"
 #include "gl/gpu_memory.h"
 #include "render/gpu_deformation.h"
@@ -15,10 +16,6 @@ namespace glint {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 std::optional<SceneDeformers> make_deformers(const Scene& scene, const FrameLoopOptions& options) {
   if (!options.deform || scene.deformable_meshes().empty()) return std::nullopt;
@@ -72,10 +69,10 @@ FrameLoop::DeformTimes FrameLoop::deform(int frame) {
     if (rt::DeviceTracing* device = pipeline_.device_tracing()) times.update_ticket = device->last_update();
     return times;
   }
-  const auto start = Clock::now();
+  const Stopwatch watch;
   const std::vector<std::uint32_t> dirty = deformers_->apply(*scene_, frame);
   pipeline_.upload_meshes(dirty);
-  times.deform_ms = milliseconds_since(start);
+  times.deform_ms = watch.elapsed_ms();
   times.accel_update_ms = pipeline_.update_ray_tracer(dirty);
   // A GPU backend's update only enqueues work: its GPU time is reported instead.
   if (rt::DeviceTracing* device = pipeline_.device_tracing()) times.update_ticket = device->last_update();

@@ -2,6 +2,7 @@
 
 #include "accel/builder.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "gl/gl_check.h"
 #include "gl_rt/gl_rt_bindings.h"
 #include "gl_rt/make_gl_ray_tracer.h"
@@ -12,7 +13,6 @@
 #include <dlfcn.h>
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,10 +21,6 @@ namespace glint::gl_rt {
 namespace {
 
 constexpr GLuint kWorkGroupSize = 64;  // local_size_x of both kernels
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The tracer compiles shaders and makes buffers on the current context, so it needs one: checked
 // before the first GL call, which without a context would crash rather than fail.
@@ -99,7 +95,7 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   if (!(options.auto_rebuild_sah_ratio >= 1.0f))
     fail("rt gl: auto_rebuild_sah_ratio must be >= 1 (got {})", options.auto_rebuild_sah_ratio);
   if (options.blas != rt::BlasKind::bvh) fail("rt gl: the gl backend traces BVHs only; kdtree is a cpu and cuda structure");
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   built_ = false;
   options_ = options;
   shape_ = rt::scene_shape(scene);
@@ -108,7 +104,7 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
   structures_.upload_all(blases_, tlas_);
   set_tlas_node_count();
-  build_ms_ = ms_since(start);
+  build_ms_ = watch.elapsed_ms();
   last_update_ms_ = 0.0;
   built_ = true;
 }
@@ -117,14 +113,14 @@ void GlRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_mes
   require_built("update()");
   rt::check_update(name(), shape_, scene, dirty_meshes);
   blases_.check_refittable(scene, dirty_meshes, policy, name());
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   const std::vector<bool> rebuilt = blases_.update(scene, dirty_meshes, policy);
   // The TLAS is small: built again over the new BLAS boxes and the current transforms (the
   // walkthrough's moving instances), rather than refitted.
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
   structures_.upload_update(blases_, dirty_meshes, rebuilt, tlas_);
   set_tlas_node_count();
-  last_update_ms_ = ms_since(start);
+  last_update_ms_ = watch.elapsed_ms();
 }
 
 void GlRayTracer::dispatch(const Kernel& kernel, GLuint rays, GLuint results, GLuint ray_count,

@@ -3,13 +3,13 @@
 #include "accel/embree_ray.h"
 #include "accel/trace.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 
 namespace glint::rt {
@@ -17,10 +17,6 @@ namespace {
 
 // Rays per TBB task, the grain of accel's batches.
 constexpr size_t kRayGrain = 64;
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 }  // namespace
 
@@ -57,7 +53,7 @@ void EmbreeRayTracer::set_instance_transforms(const Scene& scene) {
 
 void EmbreeRayTracer::build(const Scene& scene, const AccelOptions& /*options: the cpu backend's builders*/) {
   scene.validate();
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   release();
   shape_ = scene_shape(scene);
   const RTCDevice device = device_->handle();
@@ -114,7 +110,7 @@ void EmbreeRayTracer::build(const Scene& scene, const AccelOptions& /*options: t
   set_instance_transforms(scene);
   rtcCommitScene(top_);
   device_->check("commit top-level scene");
-  build_ms_ = ms_since(start);
+  build_ms_ = watch.elapsed_ms();
   last_update_ms_ = 0.0;
   rebuilds_ = refits_ = 0;
 }
@@ -122,7 +118,7 @@ void EmbreeRayTracer::build(const Scene& scene, const AccelOptions& /*options: t
 void EmbreeRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) {
   require_built("update()");
   check_update(name(), shape_, scene, dirty_meshes);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   for (uint32_t m : dirty_meshes) {
     MeshScene& mesh = meshes_[m];
     if (mesh.geometry != nullptr) {
@@ -144,7 +140,7 @@ void EmbreeRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty
   set_instance_transforms(scene);
   rtcCommitScene(top_);
   device_->check("commit top-level scene");
-  last_update_ms_ = ms_since(start);
+  last_update_ms_ = watch.elapsed_ms();
 }
 
 void EmbreeRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {

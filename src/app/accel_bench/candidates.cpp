@@ -14,18 +14,14 @@
 #include "accel/wide_bvh_trace.h"
 #include "app/accel_bench/candidates_optix.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "cuda/gpu_bench_kdtree.h"
 #include "cuda/gpu_bench_structure.h"
 
-#include <chrono>
 #include <memory>
 
 namespace glint::accel_bench {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 std::string embree_name(accel::EmbreeQuality quality) {
   std::string name = "embree-";
@@ -52,10 +48,10 @@ Candidate bvh_candidate(accel::BvhBuilder builder) {
   candidate.refit = [state](const accel::TriangleMesh& mesh) -> std::optional<double> {
     if (!state->built) fail("accel-bench: refit before build");
     if (!state->bvh.refittable) return std::nullopt;
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     accel::refit(state->bvh, mesh);
     state->mesh = mesh;
-    return ms_since(start);
+    return watch.elapsed_ms();
   };
   candidate.trace_closest = [state](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
     if (!state->built) fail("accel-bench: trace before build");
@@ -91,9 +87,9 @@ Candidate wide_candidate(accel::BvhBuilder builder) {
   candidate.refit = [state](const accel::TriangleMesh& mesh) -> std::optional<double> {
     if (!state->built) fail("accel-bench: refit before build");
     if (!state->refittable) return std::nullopt;
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     accel::refit(state->wide, mesh);
-    return ms_since(start);
+    return watch.elapsed_ms();
   };
   candidate.trace_closest = [state](std::span<const accel::Ray> rays, std::span<accel::Hit> hits) {
     if (!state->built) fail("accel-bench: trace before build");
