@@ -37,8 +37,6 @@ void trace_parallel(const Bvh& bvh, std::span<const Ray> rays, std::span<Result>
 
 }  // namespace
 
-std::string_view simd_path_name(WideSimdPath path) { return path == WideSimdPath::avx2 ? "avx2" : "sse"; }
-
 bool cpu_has_avx2() {
   static const bool has = [] {
     __builtin_cpu_init();

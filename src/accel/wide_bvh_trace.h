@@ -4,6 +4,7 @@
 // Hits equal the binary traversal's: the same watertight triangle test, bit for bit.
 #include "accel/ray.h"
 #include "accel/wide_bvh.h"
+#include "core/enum_names.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -36,7 +37,10 @@ WideAnyKernel8 wide_any_kernel8();
 // Which kernel 8-wide BVHs use.
 enum class WideSimdPath { sse, avx2 };
 
-std::string_view simd_path_name(WideSimdPath path);
+inline constexpr EnumNames<WideSimdPath, 2> kWideSimdPathNames{
+    "SIMD path", {{WideSimdPath::sse, "sse"}, {WideSimdPath::avx2, "avx2"}}};
+
+inline std::string_view simd_path_name(WideSimdPath path) { return kWideSimdPathNames.name_of(path); }
 bool cpu_has_avx2();
 // avx2 when the CPU has it, unless a path was forced.
 WideSimdPath wide_simd_path();

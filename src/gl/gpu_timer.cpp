@@ -14,10 +14,6 @@ PassTimingMethod pass_timing_for_renderer(std::string_view gl_renderer) {
   return software ? PassTimingMethod::finish_wall_clock : PassTimingMethod::gpu_queries;
 }
 
-std::string_view pass_timing_name(PassTimingMethod method) {
-  return method == PassTimingMethod::gpu_queries ? "gpu_queries" : "finish_wall_clock";
-}
-
 namespace {
 
 double steady_ms(std::chrono::steady_clock::time_point time) {

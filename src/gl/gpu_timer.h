@@ -22,6 +22,7 @@
 // the pass), so on software renderers the timer measures each pass instead as wall time between two
 // glFinish() calls (PassTimingMethod::finish_wall_clock). That serialises CPU and GPU, which is the
 // truth for a software renderer anyway; on a real GPU it would hide overlap, so queries stay the default.
+#include "core/enum_names.h"
 #include "gl/gl_objects.h"
 #include "gl/readback_ring.h"
 
@@ -44,7 +45,11 @@ enum class PassTimingMethod {
 // The method that gives real numbers on the renderer named `gl_renderer` (GL_RENDERER):
 // finish_wall_clock for Mesa's software rasterisers (llvmpipe, softpipe), gpu_queries otherwise.
 PassTimingMethod pass_timing_for_renderer(std::string_view gl_renderer);
-std::string_view pass_timing_name(PassTimingMethod method);  // "gpu_queries", "finish_wall_clock"
+inline constexpr EnumNames<PassTimingMethod, 2> kPassTimingNames{
+    "pass timing method",
+    {{PassTimingMethod::gpu_queries, "gpu_queries"}, {PassTimingMethod::finish_wall_clock, "finish_wall_clock"}}};
+// "gpu_queries", "finish_wall_clock" (run.json, summary.json).
+inline std::string_view pass_timing_name(PassTimingMethod method) { return kPassTimingNames.name_of(method); }
 
 struct PassTime {
   std::string name;

@@ -5,10 +5,13 @@
 
 #include "accel/builder.h"
 #include "accel/embree_scene.h"
+#include "accel/wide_bvh_trace.h"
 #include "app/accel_bench/bench_run.h"
+#include "app/bench/bench_summary.h"
 #include "backends/registry.h"
 #include "cuda/gpu_bvh_host.h"
 #include "cuda/trace_kernel.h"
+#include "gl/gpu_timer.h"
 #include "optix/build_preference.h"
 #include "render/raster_settings.h"
 #include "render/reflection_mode.h"
@@ -84,6 +87,9 @@ TEST(EnumNames, EveryNamedEnumRoundTripsAndListsItsNames) {
   expect_complete(render::kShadowMethodNames, "ShadowMethod");
   expect_complete(accel_bench::kRayKindNames, "RayKind");
   expect_complete(backends::kDeviceNames, "backends::Device");
+  expect_complete(accel::kWideSimdPathNames, "WideSimdPath");
+  expect_complete(kPassTimingNames, "PassTimingMethod");
+  expect_complete(bench::kCellStateNames, "CellOutcome::State");
 }
 
 TEST(EnumNames, TheNamesTheCliAndRunJsonUse) {

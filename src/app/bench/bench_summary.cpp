@@ -90,15 +90,6 @@ nlohmann::json read_side_file(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::string_view state_name(CellOutcome::State state) {
-  switch (state) {
-    case CellOutcome::State::done: return "done";
-    case CellOutcome::State::skipped: return "skipped";
-    case CellOutcome::State::failed: return "failed";
-  }
-  return "?";
-}
-
 nlohmann::json cell_summary(const Cell& cell, const CellOutcome& outcome, const std::filesystem::path& out,
                             std::size_t interval) {
   nlohmann::json entry = {{"id", cell.id},

@@ -4,6 +4,7 @@
 // the statistics of its CSV. Everything in it is derived from the cells' files and the settings,
 // never from the clock, so a resumed run that renders nothing writes the same summary again.
 #include "app/bench/paper_matrix.h"
+#include "core/enum_names.h"
 
 #include <nlohmann/json.hpp>
 
@@ -21,7 +22,11 @@ struct CellOutcome {
   bool resumed = false;   // done by an earlier run (its CSV was kept); not part of summary.json
 };
 
-std::string_view state_name(CellOutcome::State state);
+inline constexpr EnumNames<CellOutcome::State, 3> kCellStateNames{
+    "cell state",
+    {{CellOutcome::State::done, "done"}, {CellOutcome::State::skipped, "skipped"}, {CellOutcome::State::failed, "failed"}}};
+
+inline std::string_view state_name(CellOutcome::State state) { return kCellStateNames.name_of(state); }
 
 // The summary entry of `cell`: what it measures and its outcome; for a done frame-times cell the
 // statistics of its frame times (frame_ms: the steady-state time between consecutive frames'
