@@ -67,7 +67,7 @@ def test_no_triangles(mesh):
 
 def test_unknown_builder_and_backend(mesh):
     vertices, indices = mesh
-    with raises(r"unknown BVH builder 'bvh9' \(known: none, median, sah"):
+    with raises(r'unknown BVH builder "bvh9" \(known: none, median, sah'):
         glint.Structure(vertices, indices, builder="bvh9")
     with raises(r"^glint.Structure: unknown backend \"gpu\" \(known: cpu, embree, cuda, optix\)$"):
         glint.Structure(vertices, indices, backend="gpu")
