@@ -1,6 +1,7 @@
 #include "cuda/cuda_ray_tracer.h"
 
 #include "accel/bvh_stats.h"
+#include "core/stopwatch.h"
 #include "cuda/cuda_check.h"
 #include "cuda/cuda_stream_events.h"
 #include "cuda/device_query.h"
@@ -15,7 +16,6 @@
 #include "rt/update_decision.h"
 
 #include <algorithm>
-#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,14 +23,8 @@
 namespace glint::cuda {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // Timed device-side traces and updates kept for gpu_ms (3 frames in flight of a few each).
 constexpr std::size_t kTimedSpans = 64;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 bool builds_on_gpu(accel::BvhBuilder builder) {
   return builder == accel::BvhBuilder::lbvh || builder == accel::BvhBuilder::ploc;
@@ -275,7 +269,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   if (!(options.auto_rebuild_sah_ratio >= 1.0f))
     fail_message("rt cuda: auto_rebuild_sah_ratio must be >= 1 (got " + std::to_string(options.auto_rebuild_sah_ratio) +
                  ")");
-  const auto start = Clock::now();
+  const Stopwatch watch;
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   built_ = false;
   options_ = options;
@@ -314,7 +308,7 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   host_overflow_.reset(kTimedSpans);
   next_ray_.resize(1);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
-  build_ms_ = ms_since(start);
+  build_ms_ = watch.elapsed_ms();
   last_update_.reset();
   rebuilds_ = refits_ = 0;
   built_ = true;

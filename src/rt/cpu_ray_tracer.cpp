@@ -7,18 +7,14 @@
 #include "accel/wide_bvh_collapse.h"
 #include "accel/wide_bvh_refit.h"
 #include "core/error.h"
+#include "core/stopwatch.h"
 #include "rt/update_decision.h"
 #include "rt/wide_two_level_trace.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace glint::rt {
 namespace {
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 double sah_cost(const accel::Bvh& bvh, const accel::BuildOptions& build) {
   return accel::compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
@@ -64,7 +60,7 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
   scene.validate();
   if (!(options.auto_rebuild_sah_ratio >= 1.0f))
     fail("rt cpu: auto_rebuild_sah_ratio must be >= 1 (got {})", options.auto_rebuild_sah_ratio);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   built_ = false;
   options_ = options;
   shape_ = scene_shape(scene);
@@ -84,7 +80,7 @@ void CpuRayTracer::build(const Scene& scene, const AccelOptions& options) {
               ? accel::build_tlas(accel::kd_blas_boxes(kd_blases_), make_instances(scene), accel::BvhBuilder::sah,
                                   options_.build)
               : accel::build_tlas(blases_, make_instances(scene), accel::BvhBuilder::sah, options_.build);
-  build_ms_ = ms_since(start);
+  build_ms_ = watch.elapsed_ms();
   last_update_ms_ = 0.0;
   rebuilds_ = refits_ = 0;
   built_ = true;
@@ -98,7 +94,7 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
     if (const std::string refusal = update_refusal(name(), policy, options_.structure(), scene.meshes[m].name);
         !refusal.empty())
       fail("{}", refusal);
-  const auto start = std::chrono::steady_clock::now();
+  const Stopwatch watch;
   for (uint32_t m : dirty_meshes) {
     MeshBlas& mesh = meshes_[m];
     // Same count (checked above), new positions: the views' pointers stay valid.
@@ -128,7 +124,7 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
     accel::refit_tlas(tlas_, accel::kd_blas_boxes(kd_blases_));
   else
     accel::refit_tlas(tlas_, blases_);
-  last_update_ms_ = ms_since(start);
+  last_update_ms_ = watch.elapsed_ms();
 }
 
 void CpuRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
