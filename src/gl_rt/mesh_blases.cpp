@@ -4,6 +4,7 @@
 #include "accel/bvh_stats.h"
 #include "accel/refit.h"
 #include "core/error.h"
+#include "rt/update_decision.h"
 
 #include <algorithm>
 
@@ -45,12 +46,10 @@ void MeshBlases::build(const Scene& scene, const rt::AccelOptions& options) {
 
 void MeshBlases::check_refittable(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
                                   std::string_view backend) const {
-  if (policy == rt::UpdatePolicy::rebuild) return;
   for (uint32_t m : dirty_meshes)
-    if (!meshes_[m].bvh.refittable)
-      fail("rt {}: update policy '{}' refits, but the {} builder's BVHs cannot be refitted (mesh '{}'); use policy "
-           "rebuild or another builder",
-           backend, rt::update_policy_name(policy), accel::builder_name(options_.builder), scene.meshes[m].name);
+    if (const std::string refusal = rt::update_refusal(backend, policy, options_.structure(), scene.meshes[m].name);
+        !refusal.empty())
+      fail("{}", refusal);
 }
 
 std::vector<bool> MeshBlases::update(const Scene& scene, std::span<const uint32_t> dirty_meshes,
@@ -61,13 +60,13 @@ std::vector<bool> MeshBlases::update(const Scene& scene, std::span<const uint32_
     Mesh& mesh = meshes_[m];
     // Same count (checked by the caller), new positions: the views' pointers stay valid.
     std::copy(scene.meshes[m].positions.begin(), scene.meshes[m].positions.end(), mesh.positions.begin());
-    bool rebuild_it = policy == rt::UpdatePolicy::rebuild;
-    if (!rebuild_it) {
-      accel::refit(mesh.bvh, mesh_view(mesh));
-      rebuild_it = policy == rt::UpdatePolicy::automatic &&
-                   sah_cost(mesh.bvh, options_.build) >
-                       static_cast<double>(options_.auto_rebuild_sah_ratio) * mesh.sah_at_rebuild;
-    }
+    // The shared rule (rt/update_decision.h): automatic refits first and measures the refitted cost.
+    if (policy != rt::UpdatePolicy::rebuild) accel::refit(mesh.bvh, mesh_view(mesh));
+    const std::optional<double> sah_now = policy == rt::UpdatePolicy::automatic
+                                              ? std::optional<double>(sah_cost(mesh.bvh, options_.build))
+                                              : std::nullopt;
+    const bool rebuild_it = rt::decide_blas_update(policy, sah_now, mesh.sah_at_rebuild,
+                                                   options_.auto_rebuild_sah_ratio) == rt::BlasUpdate::rebuild;
     // The counters record the final action: a refit followed by a rebuild is a rebuild.
     if (rebuild_it) {
       rebuild(m);
