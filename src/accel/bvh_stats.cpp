@@ -10,6 +10,10 @@
 
 namespace glint::accel {
 
+double sah_cost(const Bvh& bvh, const BuildOptions& build) {
+  return compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
+}
+
 BvhStats compute_stats(const Bvh& bvh, const SahCosts& costs) {
   BvhStats stats;
   stats.nodes = bvh.nodes.size();

@@ -1,5 +1,6 @@
 #pragma once
 // Size and quality numbers of a BVH, the same for every builder so they can be compared.
+#include "accel/build_options.h"
 #include "accel/bvh.h"
 
 #include <cstddef>
@@ -31,6 +32,10 @@ struct BvhStats {
 };
 
 BvhStats compute_stats(const Bvh& bvh, const SahCosts& costs = {});
+
+// The SAH cost of `bvh` with the costs `build` used: what the automatic update policy compares
+// before and after refits (rt/update_decision.h).
+double sah_cost(const Bvh& bvh, const BuildOptions& build);
 
 // One line for logs: "sah: 1023 nodes (512 leaves, depth 12), 20.4 KiB, SAH 34.2, 1.8 ms".
 std::string format_stats(const std::string& builder, const BvhStats& stats);

@@ -11,10 +11,6 @@
 namespace glint::gl_rt {
 namespace {
 
-double sah_cost(const accel::Bvh& bvh, const accel::BuildOptions& build) {
-  return accel::compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
-}
-
 accel::TriangleMesh mesh_view(const MeshBlases::Mesh& mesh) {
   return accel::make_indexed_mesh(mesh.positions, mesh.indices);
 }
@@ -25,7 +21,7 @@ void MeshBlases::rebuild(uint32_t mesh_index) {
   Mesh& mesh = meshes_[mesh_index];
   const accel::TriangleMesh view = mesh_view(mesh);
   mesh.bvh = accel::build_bvh(options_.builder, view, options_.build);
-  mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
+  mesh.sah_at_rebuild = accel::sah_cost(mesh.bvh, options_.build);
   // The new BVH lives in new storage: the view must follow it.
   blases_[mesh_index] = accel::make_blas(mesh.bvh, view);
 }
@@ -63,7 +59,7 @@ std::vector<bool> MeshBlases::update(const Scene& scene, std::span<const uint32_
     // The shared rule (rt/update_decision.h): automatic refits first and measures the refitted cost.
     if (policy != rt::UpdatePolicy::rebuild) accel::refit(mesh.bvh, mesh_view(mesh));
     const std::optional<double> sah_now = policy == rt::UpdatePolicy::automatic
-                                              ? std::optional<double>(sah_cost(mesh.bvh, options_.build))
+                                              ? std::optional<double>(accel::sah_cost(mesh.bvh, options_.build))
                                               : std::nullopt;
     const bool rebuild_it = rt::decide_blas_update(policy, sah_now, mesh.sah_at_rebuild,
                                                    options_.auto_rebuild_sah_ratio) == rt::BlasUpdate::rebuild;
@@ -83,7 +79,7 @@ std::optional<double> MeshBlases::sah_drift() const {
   std::optional<double> drift;
   for (const Mesh& mesh : meshes_) {
     if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
-    drift = std::max(drift.value_or(0.0), sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild);
+    drift = std::max(drift.value_or(0.0), accel::sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild);
   }
   return drift;
 }

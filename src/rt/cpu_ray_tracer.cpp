@@ -16,10 +16,6 @@
 namespace glint::rt {
 namespace {
 
-double sah_cost(const accel::Bvh& bvh, const accel::BuildOptions& build) {
-  return accel::compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
-}
-
 std::vector<accel::Instance> make_instances(const Scene& scene) {
   std::vector<accel::Instance> instances;
   instances.reserve(scene.instances.size());
@@ -42,7 +38,7 @@ void CpuRayTracer::rebuild_blas(uint32_t mesh_index) {
     return;
   }
   mesh.bvh = accel::build_bvh(options_.builder, view, options_.build);
-  mesh.sah_at_rebuild = sah_cost(mesh.bvh, options_.build);
+  mesh.sah_at_rebuild = accel::sah_cost(mesh.bvh, options_.build);
   // The new BVH lives in new storage: the traversal's view must follow it.
   blases_[mesh_index] = accel::make_blas(mesh.bvh, view);
   // collapse_to_wide refuses split references (it is checked here rather than caught, so a real
@@ -102,8 +98,9 @@ void CpuRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_me
     // Refit first (the automatic rule measures the refitted BVH). The binary BVH is refitted even
     // when tracing is wide: the TLAS boxes and the SAH drift come from it.
     if (policy != UpdatePolicy::rebuild) accel::refit(mesh.bvh, mesh_view(mesh));
-    const std::optional<double> sah_now =
-        policy == UpdatePolicy::automatic ? std::optional<double>(sah_cost(mesh.bvh, options_.build)) : std::nullopt;
+    const std::optional<double> sah_now = policy == UpdatePolicy::automatic
+                                              ? std::optional<double>(accel::sah_cost(mesh.bvh, options_.build))
+                                              : std::nullopt;
     if (decide_blas_update(policy, sah_now, mesh.sah_at_rebuild, options_.auto_rebuild_sah_ratio) ==
         BlasUpdate::rebuild) {
       rebuild_blas(m);
@@ -162,7 +159,7 @@ RayTracerStats CpuRayTracer::stats() const {
              mesh.wide.blocks.size() * sizeof(accel::TriangleBlock<8>) +
              mesh.kdtree.nodes.size() * sizeof(accel::KdNode) + mesh.kdtree.prim_indices.size() * sizeof(uint32_t);
     if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
-    const double drift = sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild;
+    const double drift = accel::sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild;
     stats.blas_sah_drift = std::max(stats.blas_sah_drift.value_or(0.0), drift);
   }
   stats.memory_bytes = bytes;
