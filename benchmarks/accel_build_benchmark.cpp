@@ -14,14 +14,14 @@
 //
 //   ./build/benchmarks/glint_benchmarks --benchmark_filter='LbvhPhases|Build/|Embree/'
 //   (add --benchmark_counters_tabular=true for a table of the counters)
-#include "accel/binary_tree.h"
-#include "accel/build_lbvh.h"
-#include "accel/builder.h"
-#include "accel/bvh_collapse_leaves.h"
-#include "accel/embree_scene.h"
-#include "accel/lbvh_layout.h"
-#include "accel/morton.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/binary_tree.h"
+#include "accel/builders/build_lbvh.h"
+#include "accel/builders/builder.h"
+#include "accel/builders/bvh_collapse_leaves.h"
+#include "rt/embree/embree_scene.h"
+#include "accel/builders/lbvh_layout.h"
+#include "accel/builders/morton.h"
+#include "accel/builders/primitive_bounds.h"
 #include "core/stopwatch.h"
 #include "rt/scene_geometry.h"
 #include "scene/presets.h"

@@ -13,11 +13,11 @@
 // merge_leaf_size) override the defaults for experiments.
 //
 //   ./build/benchmarks/glint_benchmarks --benchmark_counters_tabular=true
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/trace.h"
-#include "accel/wide_bvh_collapse.h"
-#include "accel/wide_bvh_trace.h"
+#include "accel/wide/wide_bvh_collapse.h"
+#include "accel/wide/wide_bvh_trace.h"
 #include "core/stopwatch.h"
 #include "scene/camera_path.h"
 #include "scene/presets.h"

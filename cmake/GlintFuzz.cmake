@@ -42,8 +42,7 @@ function(glint_add_fuzz_build)
   # src/accel, for the BVH the default walkthrough probes a loaded scene with (scene/scene_ray_probe.h;
   # not its Embree backend): sanitized but without libFuzzer's coverage, which is for the parsers.
   # Instrumented, its ray casts took most of each input's time.
-  file(GLOB GLINT_FUZZ_ACCEL_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/accel/*.cpp)
-  list(FILTER GLINT_FUZZ_ACCEL_SOURCES EXCLUDE REGEX ".*/src/accel/embree_[a-z_]*\\.cpp$")
+  file(GLOB_RECURSE GLINT_FUZZ_ACCEL_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/accel/*.cpp)
   add_library(glint_fuzz_accel STATIC ${GLINT_FUZZ_ACCEL_SOURCES})
   target_include_directories(glint_fuzz_accel PUBLIC ${CMAKE_SOURCE_DIR}/src)
   target_compile_definitions(glint_fuzz_accel PUBLIC GLM_FORCE_XYZW_ONLY GLM_ENABLE_EXPERIMENTAL

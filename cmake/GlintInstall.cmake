@@ -1,8 +1,8 @@
 # `cmake --install` (docs/library.md): the `glint` CMake package with glint::accel (the acceleration
 # structures and CPU tracing: no GL, no window system, no Embree) and, in a build with CUDA,
 # glint::accel_cuda (the device BVHs and tracing); headers under include/glint/ in src/'s layout, so
-# a consumer writes #include "accel/builder.h" as glint does. Components: `development` (libraries,
-# headers, the package files), `runtime` (the glint command) and `python` (the module,
+# a consumer writes #include "accel/builders/builder.h" as glint does. Components: `development`
+# (libraries, headers, the package files), `runtime` (the glint command) and `python` (the module,
 # cmake/GlintPython.cmake). The example project
 # examples/accel_trace builds against an install in the test suite (LibraryExampleBuilds).
 include(GNUInstallDirs)
@@ -16,10 +16,11 @@ endif()
 install(TARGETS ${GLINT_EXPORTED_TARGETS} EXPORT glintTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development)
 
-# Headers: accel/ without the Embree wrappers, the core/ headers accel/ and cuda/ include, and with
-# CUDA the src/cuda/ headers of glint_accel_cuda (not those of the files that stay in glint).
+# Headers: accel/ with its subfolders (no Embree: its wrapper lives in rt/embree/), the core/ headers
+# accel/ and cuda/ include, and with CUDA the src/cuda/ headers of glint_accel_cuda (not those of the
+# files that stay in glint).
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/src/accel/ DESTINATION include/glint/accel COMPONENT development
-        FILES_MATCHING PATTERN "*.h" PATTERN "embree_*" EXCLUDE)
+        FILES_MATCHING PATTERN "*.h")
 install(FILES ${CMAKE_SOURCE_DIR}/src/core/error.h ${CMAKE_SOURCE_DIR}/src/core/error_type.h
               ${CMAKE_SOURCE_DIR}/src/core/enum_names.h ${CMAKE_SOURCE_DIR}/src/core/stopwatch.h
               ${CMAKE_SOURCE_DIR}/src/core/math.h

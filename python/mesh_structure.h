@@ -3,7 +3,7 @@
 // rt::RayTracer backend (cpu, embree, cuda, optix) built with any builder of accel's menu, traced,
 // refitted and measured through the RayTracer interface the renderer uses, so Python sees exactly
 // the hits the renderer's tracers give. No Python types here: python/module.cpp converts the arrays.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/ray.h"
 #include "core/math.h"
 #include "rt/ray_tracer.h"

@@ -2,7 +2,7 @@
 // the menu, any ray tracing backend), closest-hit and occlusion queries, refit, stats; glint.render,
 // one frame of `glint render` as a numpy image. Every glint::Error becomes glint.Error with glint's
 // one-line message. Long calls (builds, traces, refits, renders) release the GIL.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "app/render_frame_api.h"
 #include "core/error.h"
 #include "cuda/device_query.h"

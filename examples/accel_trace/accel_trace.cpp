@@ -1,6 +1,6 @@
 // glint::accel as a library: a BVH over a few triangles built with two of glint's builders, a ray
 // traced through it (closest hit and occlusion), the BVH refitted after the triangles moved.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/refit.h"
 #include "accel/trace.h"

@@ -1,7 +1,7 @@
 // glint::accel_cuda as a library: the example's triangles in a BVH built on the GPU (lbvh) and
 // traced by glint's CUDA kernel. Needs a CUDA GPU: without one it prints glint's one-line reason and
 // exits with 1.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/triangle_mesh.h"
 #include "core/error.h"
 #include "cuda/gpu_bench_structure.h"

@@ -1,6 +1,6 @@
 #include "accel/bvh_stats.h"
 
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Size and quality numbers of a BVH, the same for every builder so they can be compared.
-#include "accel/build_options.h"
+#include "accel/builders/build_options.h"
 #include "accel/bvh.h"
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 #include "accel/refit.h"
 
-#include "accel/parallel_array.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/parallel_array.h"
+#include "accel/builders/primitive_bounds.h"
 #include "core/error.h"
 
 #include <tbb/parallel_for.h>

@@ -2,7 +2,7 @@
 // Two levels: one BLAS (a Bvh over one mesh's triangles) per mesh, and a TLAS, a Bvh over
 // instances (a BLAS plus a transform) built by the same builders from the instances' world boxes.
 // Moving an instance touches only the TLAS, which is small: rebuild or refit it every frame.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh.h"
 #include "accel/triangle_mesh.h"
 
@@ -43,7 +43,7 @@ struct Tlas {
 // box). glint::Error when an instance names a BLAS past the end of `blases`.
 std::vector<Aabb> instance_world_boxes(std::span<const Blas> blases, std::span<const Instance> instances);
 // The same from each BLAS's object-space root box (empty for an empty BLAS), for BLASes of any kind
-// (the kd-tree's, accel/kdtree_tlas.h).
+// (the kd-tree's, accel/kdtree/kdtree_tlas.h).
 std::vector<Aabb> instance_world_boxes(std::span<const Aabb> blas_boxes, std::span<const Instance> instances);
 
 Tlas build_tlas(std::span<const Blas> blases, std::vector<Instance> instances, BvhBuilder builder,

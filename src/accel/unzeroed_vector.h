@@ -12,7 +12,7 @@
 // T must be trivially copyable and destructible (an implicit-lifetime type), so the allocation
 // itself creates the elements and leaving them unwritten is well defined; reading one before it is
 // written gives an unspecified value, so whoever calls resize(n) must write all n.
-#include "accel/parallel_array.h"
+#include "accel/builders/parallel_array.h"
 
 #include <algorithm>
 #include <cstddef>

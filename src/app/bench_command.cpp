@@ -1,6 +1,6 @@
 #include "app/bench_command.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "rt/blas_structure.h"
 #include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"

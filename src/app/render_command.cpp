@@ -16,7 +16,7 @@
 #include "core/stopwatch.h"
 #include "cuda/device_query.h"
 #include "gl/egl_context.h"
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "render/frame_pipeline.h"
 #include "rt/ray_tracer.h"
 #include "scene/camera_path.h"

@@ -1,11 +1,11 @@
 #pragma once
 // The SAH kd-tree on the GPU, for accel-bench's `cuda-kdtree` row: built on the CPU
 // (accel::build_kdtree, Wald & Havran 2006), uploaded in its 8-byte node layout, and traced by a CUDA
-// kernel running accel/kdtree_traverse.h's front-to-back traversal (the OptiX 3/4 TriangleKdTree of
+// kernel running accel/kdtree/kdtree_traverse.h's front-to-back traversal (the OptiX 3/4 TriangleKdTree of
 // the paper's menu, on glint's GPU path). Not refittable (split references). Times as in
 // gpu_bench_structure.h: build = CPU build + upload, trace = the kernel alone.
 // Plain C++ (no CUDA headers); without CUDA or a GPU the constructor throws glint::Error.
-#include "accel/kdtree.h"
+#include "accel/kdtree/kdtree.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
 

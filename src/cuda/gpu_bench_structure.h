@@ -10,8 +10,8 @@
 //  - refit: triangle boxes + bottom-up refit, the moved vertices already uploaded.
 //  - trace: the closest-hit kernel alone (the rays' upload and the hits' download excluded).
 // Plain C++ (no CUDA headers); without CUDA or a GPU the constructor throws glint::Error.
-#include "accel/build_options.h"
-#include "accel/builder.h"
+#include "accel/builders/build_options.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"

@@ -8,7 +8,7 @@
 // Everything here is asynchronous on the given stream: calls enqueue work and return; once the
 // builder's scratch and the output are large enough, a rebuild allocates nothing.
 // CUDA-only header: include it from .cu files.
-#include "accel/build_options.h"
+#include "accel/builders/build_options.h"
 #include "accel/triangle_mesh.h"
 #include "cuda/gpu_bvh.h"
 #include "cuda/gpu_bvh_host.h"  // GpuBvhBuilder, gpu_builder_name

@@ -2,7 +2,7 @@
 // The GPU BVH builders (cuda/gpu_bvh_build.h) from plain C++: host meshes in, host BVHs out, for
 // tests and benchmarks. No CUDA headers; a build without CUDA throws one clear glint::Error from
 // everything that needs the GPU (the builder names work everywhere).
-#include "accel/build_options.h"
+#include "accel/builders/build_options.h"
 #include "accel/bvh.h"
 #include "accel/triangle_mesh.h"
 #include "core/enum_names.h"

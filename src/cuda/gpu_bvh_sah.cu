@@ -1,6 +1,6 @@
 #include "cuda/gpu_bvh_sah.h"
 
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 
 namespace glint::cuda {
 namespace {

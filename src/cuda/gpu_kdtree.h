@@ -1,9 +1,9 @@
 #pragma once
-// A kd-tree in GPU memory, in exactly accel::KdNode's layout, so accel/kdtree_traverse.h's host-device
+// A kd-tree in GPU memory, in exactly accel::KdNode's layout, so accel/kdtree/kdtree_traverse.h's host-device
 // walk reads it unchanged: the cuda backend's BLAS for AccelOptions::blas = kdtree. Built on the CPU
-// (accel::build_kdtree) and uploaded; it cannot be refitted (accel/kdtree.h), so an update rebuilds it.
+// (accel::build_kdtree) and uploaded; it cannot be refitted (accel/kdtree/kdtree.h), so an update rebuilds it.
 // CUDA-only header: include it from .cu files.
-#include "accel/kdtree.h"
+#include "accel/kdtree/kdtree.h"
 #include "cuda/device_buffer.h"
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "cuda/gpu_morton.cuh"
 
-#include "accel/morton_code.h"
+#include "accel/builders/morton_code.h"
 #include "cuda/gpu_bvh_layout.cuh"
 
 #include <cub/cub.cuh>

@@ -1,7 +1,7 @@
 #pragma once
 // The Morton order both GPU builders start from, computed without a host round trip: the bounds of
 // the box centres reduced on the GPU, 30-bit codes of the centres in those bounds
-// (accel/morton_code.h, as the CPU builders quantise), sorted by CUB's radix sort with the
+// (accel/builders/morton_code.h, as the CPU builders quantise), sorted by CUB's radix sort with the
 // primitive indices as values. CUDA-only header: include it from .cu files.
 #include "cuda/device_buffer.h"
 #include "core/math.h"

@@ -1,7 +1,7 @@
 #include "cuda/gpu_ploc.cuh"
 
 #include "accel/bvh_node.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 
 #include <cub/cub.cuh>
 
@@ -13,7 +13,7 @@ namespace {
 
 constexpr uint32_t kNoNeighbour = 0xFFFFFFFFu;
 
-// As the CPU builder (accel/build_ploc.cpp): among pairs at equal distance prefer neighbours
+// As the CPU builder (accel/builders/build_ploc.cpp): among pairs at equal distance prefer neighbours
 // (smaller gap), then pairs starting at an even position, then the earlier pair. With the
 // distances symmetric, every candidate pair is strictly ordered by (distance, key), so the least
 // pair of an iteration is mutual and every iteration merges at least once; the parity term halves

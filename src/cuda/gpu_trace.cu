@@ -1,6 +1,6 @@
 #include "cuda/gpu_trace.h"
 
-#include "accel/kdtree_traverse.h"
+#include "accel/kdtree/kdtree_traverse.h"
 #include "cuda/cuda_check.h"
 #include "cuda/gpu_traverse.cuh"
 

@@ -1,8 +1,8 @@
 #pragma once
 // The closest-hit and any-hit (occlusion) kernels over a ray list in device memory (the CUDA
 // backend's trace), and the instance boxes a GPU TLAS is built over. CUDA-only header: include it from .cu files.
-#include "accel/kdtree.h"
-#include "accel/kdtree_tlas.h"
+#include "accel/kdtree/kdtree.h"
+#include "accel/kdtree/kdtree_tlas.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
 #include "cuda/trace_kernel.h"
@@ -56,7 +56,7 @@ void launch_hit_shadow_rays(const accel::KdTlasView& tlas, const accel::Ray* ray
 // Through one BLAS (a single-level structure, as accel-bench measures them): Hit.instance is 0.
 void launch_trace_closest(const accel::Blas& blas, const TraceLaunch& launch, cudaStream_t stream);
 
-// The same through a kd-tree (accel/kdtree_traverse.h's front-to-back traversal, whose stack the
+// The same through a kd-tree (accel/kdtree/kdtree_traverse.h's front-to-back traversal, whose stack the
 // builder's depth limit bounds) over one mesh: Hit.instance is 0.
 void launch_trace_closest(const accel::KdTreeView& tree, const accel::TriangleMesh& mesh, const accel::Ray* rays,
                           accel::Hit* hits, uint32_t count, cudaStream_t stream);

@@ -11,7 +11,7 @@
 #include "accel/bvh_node.h"
 #include "accel/intersect_box.h"
 #include "accel/intersect_triangle.h"
-#include "accel/kdtree_tlas.h"
+#include "accel/kdtree/kdtree_tlas.h"
 #include "accel/ray.h"
 #include "accel/tlas_traverse.h"
 #include "accel/traverse.h"
@@ -149,7 +149,7 @@ __device__ inline bool gpu_trace_any(const accel::TlasView& tlas, const accel::R
 }
 
 // Two levels whose BLASes are kd-trees (AccelOptions::blas = kdtree): the same guarded TLAS walk; at
-// an instance leaf, accel/kdtree_tlas.h's object-space kd-tree walk (front to back, its stack bounded
+// an instance leaf, accel/kdtree/kdtree_tlas.h's object-space kd-tree walk (front to back, its stack bounded
 // by the builder's depth limit, so it needs no guard) with the current closest t as its limit.
 __device__ inline accel::Hit gpu_trace_closest(const accel::KdTlasView& tlas, const accel::Ray& ray, bool& overflow) {
   accel::Hit hit;

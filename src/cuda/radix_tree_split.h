@@ -3,7 +3,7 @@
 // Figure 4, for one interior node: which end of its key range interior node i sits at, the other end
 // (exponential then binary search) and the split position gamma (binary search), one node per
 // thread of the GPU LBVH (gpu_lbvh.cu). The CPU LBVH builds the same tree bottom-up instead
-// (accel/build_lbvh.cpp): on a CPU one climb per leaf beats a search per node. `delta(a, b)` is
+// (accel/builders/build_lbvh.cpp): on a CPU one climb per leaf beats a search per node. `delta(a, b)` is
 // the length of the common prefix of sorted keys a and b, and -1 when b is outside [0, leaf count).
 #include "core/math.h"
 

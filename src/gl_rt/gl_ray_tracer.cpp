@@ -1,6 +1,6 @@
 #include "gl_rt/gl_ray_tracer.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "gl/gl_check.h"

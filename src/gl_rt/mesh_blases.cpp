@@ -1,6 +1,6 @@
 #include "gl_rt/mesh_blases.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/refit.h"
 #include "core/error.h"

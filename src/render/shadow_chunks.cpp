@@ -1,6 +1,6 @@
 #include "render/shadow_chunks.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/triangle_mesh.h"
 #include "core/error.h"
 

@@ -1,9 +1,9 @@
 #pragma once
 // The per-mesh structure (BLAS) of the backends that build glint's own structures (cpu, cuda): a
-// BVH from one of accel's builders, or the SAH kd-tree (accel/kdtree.h), which the paper compares
+// BVH from one of accel's builders, or the SAH kd-tree (accel/kdtree/kdtree.h), which the paper compares
 // beside them. One menu of names for every place that takes a structure (--accel, bench's --accels,
 // the viewer): the builder names, then "kdtree".
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 
 #include <string>
 #include <string_view>

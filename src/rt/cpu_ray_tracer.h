@@ -9,19 +9,19 @@
 // when its SAH cost (accel::compute_stats) exceeds auto_rebuild_sah_ratio x its SAH cost at its
 // last (re)build. Then the TLAS is refitted over the new BLAS boxes and the current transforms.
 //
-// AccelOptions::blas = kdtree: an SAH kd-tree per mesh instead (accel/kdtree_tlas.h: the same TLAS over
+// AccelOptions::blas = kdtree: an SAH kd-tree per mesh instead (accel/kdtree/kdtree_tlas.h: the same TLAS over
 // the trees' root cells, each instance's kd-tree walked front to back); updates rebuild it (refit and
 // automatic are refused, as for sbvh: rt/update_decision.h). wide_traversal does not apply.
 //
 // Tracing (AccelOptions::wide_traversal, the default): every BLAS is also collapsed to an 8-wide
-// BVH (accel/wide_bvh_collapse.h) after each (re)build and refitted with it, and the TLAS walk
+// BVH (accel/wide/wide_bvh_collapse.h) after each (re)build and refitted with it, and the TLAS walk
 // enters those with the SIMD kernel (rt/wide_two_level_trace.h). The binary BVH stays the master:
 // the TLAS boxes, the automatic policy's SAH cost and the drift in stats() come from it. A builder
 // whose BVH cannot be collapsed (sbvh, split references) traces its binary BVH for that mesh.
 #include "accel/bvh.h"
-#include "accel/kdtree_tlas.h"
+#include "accel/kdtree/kdtree_tlas.h"
 #include "accel/tlas.h"
-#include "accel/wide_bvh.h"
+#include "accel/wide/wide_bvh.h"
 #include "rt/ray_tracer.h"
 #include "rt/scene_shape.h"
 

@@ -1,6 +1,6 @@
 #include "rt/embree_ray_tracer.h"
 
-#include "accel/embree_ray.h"
+#include "rt/embree/embree_ray.h"
 #include "accel/trace.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
@@ -65,7 +65,7 @@ void EmbreeRayTracer::build(const Scene& scene, const AccelOptions& /*options: t
     mesh.deformable = source.deformable;
     mesh.scene = rtcNewScene(device);
     device_->check("rtcNewScene");
-    // ROBUST: Embree's default tests let rays slip through shared edges (see accel/embree_scene.cpp).
+    // ROBUST: Embree's default tests let rays slip through shared edges (see rt/embree/embree_scene.cpp).
     rtcSetSceneFlags(mesh.scene, (mesh.deformable ? RTC_SCENE_FLAG_DYNAMIC : RTC_SCENE_FLAG_NONE) | RTC_SCENE_FLAG_ROBUST);
     // A dynamic scene at scene quality MEDIUM is rebuilt by every commit (measured: refits cost as
     // much as rebuilds); at LOW, Embree honours the geometry's REFIT quality.

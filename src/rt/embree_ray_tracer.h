@@ -9,7 +9,7 @@
 // geometry quality RTC_BUILD_QUALITY_REFIT (Embree refits), with rebuild at
 // RTC_BUILD_QUALITY_MEDIUM (Embree builds anew). Embree does not expose its nodes, so automatic
 // cannot measure the SAH drift here: it always refits (and stats().blas_sah_drift is absent).
-#include "accel/embree_device.h"
+#include "rt/embree/embree_device.h"
 #include "rt/ray_tracer.h"
 #include "rt/scene_shape.h"
 

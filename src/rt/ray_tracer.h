@@ -9,8 +9,8 @@
 // triangle's index within that instance's mesh (Scene::meshes[instances[instance].mesh], triangle
 // indices[3 prim .. 3 prim + 2]), u, v its barycentrics (point = (1 - u - v) v0 + u v1 + v v2) and
 // t is measured along the world ray's unnormalised direction. A miss is Hit{} (prim == kInvalidIndex).
-#include "accel/builder.h"
-#include "accel/build_options.h"
+#include "accel/builders/builder.h"
+#include "accel/builders/build_options.h"
 #include "accel/ray.h"
 #include "core/enum_names.h"
 #include "rt/blas_structure.h"

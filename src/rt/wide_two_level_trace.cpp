@@ -3,7 +3,7 @@
 #include "accel/bvh_node.h"
 #include "accel/tlas_traverse.h"
 #include "accel/trace.h"
-#include "accel/wide_bvh_trace.h"
+#include "accel/wide/wide_bvh_trace.h"
 #include "core/error.h"
 
 #include <tbb/blocked_range.h>

@@ -8,7 +8,7 @@
 // tlas.instances, prim = triangle index in that instance's mesh, t along the world ray.
 #include "accel/ray.h"
 #include "accel/tlas.h"
-#include "accel/wide_bvh.h"
+#include "accel/wide/wide_bvh.h"
 
 #include <cstdint>
 #include <span>

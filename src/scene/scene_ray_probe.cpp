@@ -1,6 +1,6 @@
 #include "scene/scene_ray_probe.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/trace.h"
 #include "accel/triangle_mesh.h"

@@ -1,6 +1,6 @@
 #include "viewer/viewer_settings.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"

@@ -1,14 +1,14 @@
 // The pieces of the Morton-order builders: the Karras radix tree, leaf collapsing and the depth
 // limit (bvh_collapse_leaves), treelet restructuring (trbvh) and PLOC's options. The whole builders
 // are also covered by every test that iterates kAllBvhBuilders.
-#include "accel/binary_tree.h"
-#include "accel/build_lbvh.h"
-#include "accel/build_ploc.h"
-#include "accel/build_trbvh.h"
-#include "accel/bvh_collapse_leaves.h"
+#include "accel/builders/binary_tree.h"
+#include "accel/builders/build_lbvh.h"
+#include "accel/builders/build_ploc.h"
+#include "accel/builders/build_trbvh.h"
+#include "accel/builders/bvh_collapse_leaves.h"
 #include "accel/bvh_stats.h"
 #include "accel/bvh_validate.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 #include "core/error.h"
 #include "same_tree_check.h"
 #include "test_scenes.h"

@@ -1,15 +1,15 @@
 // Who times a build: the builders return the structure only, and build_bvh (the menu's entry point,
-// accel/builder.h) times them once, the mesh overload including the triangles' bounds; accel-bench,
+// accel/builders/builder.h) times them once, the mesh overload including the triangles' bounds; accel-bench,
 // the stats and the GPU upload read that one number.
-#include "accel/build_lbvh.h"
-#include "accel/build_median.h"
-#include "accel/build_none.h"
-#include "accel/build_ploc.h"
-#include "accel/build_sah.h"
-#include "accel/build_sbvh.h"
-#include "accel/build_trbvh.h"
-#include "accel/builder.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/build_lbvh.h"
+#include "accel/builders/build_median.h"
+#include "accel/builders/build_none.h"
+#include "accel/builders/build_ploc.h"
+#include "accel/builders/build_sah.h"
+#include "accel/builders/build_sbvh.h"
+#include "accel/builders/build_trbvh.h"
+#include "accel/builders/builder.h"
+#include "accel/builders/primitive_bounds.h"
 #include "test_scenes.h"
 
 #include <gtest/gtest.h>

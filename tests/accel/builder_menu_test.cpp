@@ -2,10 +2,10 @@
 // a random soup, a degenerate-heavy soup and a piece of the atrium. Brute force over 100k rays x 50k
 // triangles takes minutes on two cores, so the reference is the `sah` BVH's answers, and the `none`
 // case of the menu checks exactly that reference against brute force on the first 10k rays.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_stats.h"
 #include "accel/bvh_validate.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 #include "accel/trace.h"
 #include "scene/presets.h"
 #include "test_scenes.h"

@@ -1,10 +1,10 @@
 // The two structures whose leaves hold references (kd-tree, SBVH) against brute force: random
 // soups, watertight grids, axis-parallel rays and a soup made of degenerate cases, >100k rays each.
-#include "accel/build_sbvh.h"
-#include "accel/kdtree.h"
-#include "accel/kdtree_trace.h"
-#include "accel/kdtree_validate.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/build_sbvh.h"
+#include "accel/kdtree/kdtree.h"
+#include "accel/kdtree/kdtree_trace.h"
+#include "accel/kdtree/kdtree_validate.h"
+#include "accel/builders/primitive_bounds.h"
 #include "accel/bvh_validate.h"
 #include "accel/trace.h"
 #include "test_scenes.h"

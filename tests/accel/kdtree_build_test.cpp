@@ -1,7 +1,7 @@
-#include "accel/kdtree.h"
-#include "accel/kdtree_stats.h"
-#include "accel/kdtree_trace.h"
-#include "accel/kdtree_validate.h"
+#include "accel/kdtree/kdtree.h"
+#include "accel/kdtree/kdtree_stats.h"
+#include "accel/kdtree/kdtree_trace.h"
+#include "accel/kdtree/kdtree_validate.h"
 #include "core/error.h"
 #include "test_scenes.h"
 

@@ -1,11 +1,11 @@
 // lbvh's one-pass sweep and layout (lbvh_layout.h) against the BinaryTree path (build_karras_tree
 // then flatten_tree), which builds the same radix tree and collapse node by node: the same tree must
 // come out, whatever the chunk size, laid out with children after parents.
-#include "accel/build_lbvh.h"
-#include "accel/bvh_collapse_leaves.h"
+#include "accel/builders/build_lbvh.h"
+#include "accel/builders/bvh_collapse_leaves.h"
 #include "accel/bvh_validate.h"
-#include "accel/lbvh_layout.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/lbvh_layout.h"
+#include "accel/builders/primitive_bounds.h"
 #include "core/error.h"
 #include "same_tree_check.h"
 #include "test_scenes.h"

@@ -1,4 +1,4 @@
-#include "accel/morton.h"
+#include "accel/builders/morton.h"
 #include "core/error.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 #pragma once
 // The top-down builders' references over a test scene's primitives, for tests of binning and
 // partitioning (shared by parallel_build_test and sah_block_binning_test).
-#include "accel/build_options.h"
-#include "accel/prim_ref.h"
+#include "accel/builders/build_options.h"
+#include "accel/builders/prim_ref.h"
 
 #include <vector>
 

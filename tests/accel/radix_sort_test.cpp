@@ -1,4 +1,4 @@
-#include "accel/radix_sort.h"
+#include "accel/builders/radix_sort.h"
 #include "core/error.h"
 
 #include <gtest/gtest.h>

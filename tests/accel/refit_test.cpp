@@ -1,6 +1,6 @@
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_validate.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 #include "accel/refit.h"
 #include "accel/trace.h"
 #include "core/error.h"

@@ -1,7 +1,7 @@
 // The large blocks that builders free are kept for the next arrays they fit (parallel_array.h):
 // reused, never handed out twice, bounded in total, and given back on request.
-#include "accel/builder.h"
-#include "accel/parallel_array.h"
+#include "accel/builders/builder.h"
+#include "accel/builders/parallel_array.h"
 #include "accel/unzeroed_vector.h"
 
 #include <gtest/gtest.h>

@@ -2,11 +2,11 @@
 // bin mapping against the scalar formulas (edge values included), block-by-block binning against
 // plain binning and brute-force per-block counts, and a partition told the blocks' left counts
 // against one that counts them itself.
-#include "accel/prim_partition.h"
-#include "accel/prim_ref.h"
-#include "accel/primitive_bounds.h"
-#include "accel/sah_binning.h"
-#include "accel/sse_box.h"
+#include "accel/builders/prim_partition.h"
+#include "accel/builders/prim_ref.h"
+#include "accel/builders/primitive_bounds.h"
+#include "accel/builders/sah_binning.h"
+#include "accel/builders/sse_box.h"
 #include "prim_ref_test_support.h"
 #include "test_scenes.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The builders' promise that their output does not depend on the number of threads: build once
 // with every thread and once inside a one-thread arena, and expect identical arrays.
-#include "accel/build_options.h"
+#include "accel/builders/build_options.h"
 #include "accel/bvh.h"
 
 #include <gtest/gtest.h>

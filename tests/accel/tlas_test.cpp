@@ -1,4 +1,4 @@
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_validate.h"
 #include "accel/refit.h"
 #include "accel/tlas.h"

@@ -1,4 +1,4 @@
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/trace.h"
 #include "core/error.h"
 #include "test_scenes.h"

@@ -1,10 +1,10 @@
 #pragma once
 // Shared by the wide BVH tests: building a wide BVH of either width from a binary builder, forcing
 // a SIMD path for the duration of a test, and tracing a wide BVH of either width.
-#include "accel/builder.h"
-#include "accel/wide_bvh.h"
-#include "accel/wide_bvh_collapse.h"
-#include "accel/wide_bvh_trace.h"
+#include "accel/builders/builder.h"
+#include "accel/wide/wide_bvh.h"
+#include "accel/wide/wide_bvh_collapse.h"
+#include "accel/wide/wide_bvh_trace.h"
 
 #include <gtest/gtest.h>
 

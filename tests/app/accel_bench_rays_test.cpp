@@ -1,5 +1,5 @@
 // accel-bench's rays: checked against an independent projection (glm::perspective) and the mirror law.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/trace.h"
 #include "app/accel_bench/ray_generation.h"
 #include "core/error.h"

@@ -1,5 +1,5 @@
 // accel-bench end to end: in process on a scene built in code, and through the CLI.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "app/accel_bench/bench_run.h"
 #include "app/accel_bench/candidates.h"
 #include "app/accel_bench/hit_check.h"

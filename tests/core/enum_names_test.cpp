@@ -3,9 +3,9 @@
 // takes exactly those names.
 #include "core/enum_names.h"
 
-#include "accel/builder.h"
-#include "accel/embree_scene.h"
-#include "accel/wide_bvh_trace.h"
+#include "accel/builders/builder.h"
+#include "rt/embree/embree_scene.h"
+#include "accel/wide/wide_bvh_trace.h"
 #include "app/accel_bench/bench_run.h"
 #include "app/bench/bench_summary.h"
 #include "backends/registry.h"

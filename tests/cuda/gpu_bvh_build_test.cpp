@@ -7,9 +7,9 @@
 // reduced atrium) brute force over 100k rays would take minutes, so the reference is the CPU `sah`
 // BVH's answers (itself checked against brute force in tests/accel), checked here again against
 // brute force on the first kBruteForceCheckRays rays.
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/bvh_validate.h"
-#include "accel/primitive_bounds.h"
+#include "accel/builders/primitive_bounds.h"
 #include "accel/refit.h"
 #include "accel/test_scenes.h"
 #include "accel/trace.h"

@@ -6,7 +6,7 @@
 #include "gl_rt/gl_ray_tracer.h"
 #include "backends/registry.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "gl/gl_objects.h"
 #include "gl/gl_test_context.h"
 #include "rt/ray_tracer.h"

@@ -4,8 +4,8 @@
 // two-level wide batch's own checks.
 #include "rt/cpu_ray_tracer.h"
 
-#include "accel/builder.h"
-#include "accel/wide_bvh_collapse.h"
+#include "accel/builders/builder.h"
+#include "accel/wide/wide_bvh_collapse.h"
 #include "rt/ray_tracer_check.h"
 #include "rt/reflection_rays.h"
 #include "rt/tiny_scene.h"

@@ -5,7 +5,7 @@
 #include "rt/ray_tracer.h"
 #include "backends/registry.h"
 
-#include "accel/builder.h"
+#include "accel/builders/builder.h"
 #include "accel/traverse.h"
 #include "rt/instance_subset_tracer.h"
 #include "rt/ray_tracer_check.h"

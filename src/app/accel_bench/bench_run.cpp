@@ -1,6 +1,6 @@
 #include "app/accel_bench/bench_run.h"
 
-#include "accel/embree_scene.h"
+#include "rt/embree/embree_scene.h"
 #include "app/accel_bench/candidates.h"
 #include "app/accel_bench/hit_check.h"
 #include "app/accel_bench/ray_generation.h"

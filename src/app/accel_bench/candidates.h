@@ -2,8 +2,8 @@
 // The structures accel-bench compares, as a list of entries with one uniform interface. A new
 // structure (a kd-tree, a wide BVH, a GPU builder) is one more entry in candidate_menu(); BVH
 // builders come from accel::kAllBvhBuilders, so a builder added there appears here unasked.
-#include "accel/builder.h"
-#include "accel/embree_device.h"
+#include "accel/builders/builder.h"
+#include "rt/embree/embree_device.h"
 #include "accel/ray.h"
 #include "accel/triangle_mesh.h"
 
