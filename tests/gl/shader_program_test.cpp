@@ -8,6 +8,8 @@
 
 #include "support/error_of.h"
 
+#include "support/scoped_env.h"
+#include "support/temp_folder.h"
 #include "support/test_paths.h"
 
 #include <fstream>
@@ -63,6 +65,24 @@ TEST(GlEmbeddedShaders, UnknownNameIsAnErrorListingTheKnownOnes) {
   const std::string message = error_of([] { shader_source("no_such_pass.frag.glsl"); });
   EXPECT_NE(message.find("no_such_pass.frag.glsl"), std::string::npos) << message;
   EXPECT_NE(message.find("fullscreen.vert.glsl"), std::string::npos) << message;
+}
+
+TEST(GlEmbeddedShaders, ShaderDirReplacesOnlyTheFilesItHolds) {
+  testing::TempFolder folder;
+  {
+    std::ofstream file(folder.path() / "solid_color.frag.glsl", std::ios::binary);
+    file << "// replaced\n";
+  }
+  const std::string embedded(shader_source("solid_color.frag.glsl"));
+  {
+    const testing::ScopedEnv env("GLINT_SHADER_DIR", folder.path().string());
+    EXPECT_EQ(shader_source("solid_color.frag.glsl"), "// replaced\n");
+    // A name the folder lacks stays embedded; an unknown one is still an error.
+    EXPECT_EQ(*find_embedded_shader("fullscreen.vert.glsl"), shader_source("fullscreen.vert.glsl"));
+    EXPECT_NE(shader_source("fullscreen.vert.glsl").find("#version"), std::string_view::npos);
+    EXPECT_FALSE(find_embedded_shader("no_such_pass.frag.glsl"));
+  }
+  EXPECT_EQ(shader_source("solid_color.frag.glsl"), embedded);
 }
 
 TEST_F(GlShaderProgram, SyntaxErrorNamesTheFileAndTheDriversLine) {
