@@ -7,9 +7,15 @@
 // where v is the unit direction to the camera and n the G-buffer normal turned towards the camera.
 // Slots are handed out per work group (one global atomicAdd per group), so the list order varies
 // from run to run but every listed pixel appears exactly once.
+// --reflections auto (use_tile_list): one work group per tile of the ray tile list
+// (include/tile_list.glsl); a rays-only tile lists every reflective pixel, an SSR + rays tile its
+// SSR-failed ones. Slots at or past max_rays (the frame's ray budget) are not written;
+// ray_budget_clamp.comp.glsl then cuts the count to max_rays, so a budget is never exceeded.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
+#include "include/tile_class_rule.glsl"
+#include "include/tile_list.glsl"
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;
@@ -23,6 +29,7 @@ layout(std430, binding = 9) buffer RayCounters { uint ray_count; uint reflective
 
 uniform int trace_all;
 uniform float origin_offset;
+uniform int max_rays;  // >= 0
 
 shared uint group_rays;
 shared uint group_reflective;
@@ -33,13 +40,14 @@ void main() {
   barrier();
 
   const ivec2 size = imageSize(world_position);
-  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 pixel = tile_list_pixel();
+  const bool trace_tile = trace_all != 0 || tile_list_class() == kTileRtOnly;
   bool listed = false;
   uint slot = 0u;
   if (all(lessThan(pixel, size))) {
     const bool reflective = imageLoad(world_position, pixel).w != 0.0 && imageLoad(albedo_reflectivity, pixel).a > 0.0;
     if (reflective) atomicAdd(group_reflective, 1u);
-    listed = reflective && (trace_all != 0 || imageLoad(failure_mask, pixel).r == 1u);
+    listed = reflective && (trace_tile || imageLoad(failure_mask, pixel).r == 1u);
     if (listed) slot = atomicAdd(group_rays, 1u);
   }
   barrier();
@@ -48,7 +56,7 @@ void main() {
     atomicAdd(reflective_count, group_reflective);
   }
   barrier();
-  if (!listed) return;
+  if (!listed || group_base + slot >= uint(max_rays)) return;
 
   const vec3 position = imageLoad(world_position, pixel).xyz;
   vec3 n = normalize(imageLoad(world_normal, pixel).xyz);

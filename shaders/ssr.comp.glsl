@@ -8,6 +8,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
+#include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;
@@ -201,7 +202,7 @@ void main() {
   memoryBarrierShared();
   barrier();
 
-  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  const ivec2 pixel = tile_list_pixel();
   if (all(lessThan(pixel, screen_size))) {
     const vec4 position = imageLoad(world_position, pixel);
     const float reflectivity = imageLoad(albedo_reflectivity, pixel).a;

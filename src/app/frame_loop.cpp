@@ -152,6 +152,9 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
   if (measured.ray_stats)
     for (const PassTime& pass : measured.times.passes)
       if (pass.name == "trace") measured.ray_stats->trace_ms = pass.milliseconds;
+  measured.adaptive = readback->adaptive;
+  readback->ray_stats = measured.ray_stats;  // with the gl backend's trace time
+  pipeline_.observe(measured.times, *readback);  // --reflections auto's cost model
   measured.final_image = std::move(readback->final_image);
   if (profiler_) measured.scopes = std::move(profiler_->take_frame(oldest.index, /*wait=*/true)->scopes);
   measured.resident_bytes = resident_memory_bytes();

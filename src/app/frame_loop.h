@@ -54,6 +54,7 @@ struct FrameMeasurement {
   std::optional<double> accel_update_ms;
   std::optional<render::SsrCounts> ssr_counts;          // with SSR
   std::optional<render::RayTraceFrameStats> ray_stats;  // with ray tracing
+  std::optional<render::AdaptiveFrameStats> adaptive;   // --reflections auto: its tiles and budget
   // Sampled when the frame's results were read, for long-run checks (docs/reliability.md): the
   // process's resident memory and the GPU's memory in use (NVIDIA drivers only, gl/gpu_memory.h).
   std::optional<std::uint64_t> resident_bytes;

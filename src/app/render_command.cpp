@@ -71,6 +71,10 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   settings.ssr.max_steps = options.ssr_max_steps;
   settings.ssr.thickness = options.ssr_thickness;
   settings.ssr.confidence_threshold = options.ssr_confidence;
+  if (options.ray_budget >= 0)
+    settings.adaptive.budget.rays = static_cast<std::uint32_t>(std::min<long long>(options.ray_budget, 0xffffffffLL));
+  if (options.reflection_budget_ms > 0.0) settings.adaptive.budget.ms = options.reflection_budget_ms;
+  settings.adaptive.max_unreflected_fraction = options.auto_quality;
   settings.resolve.blur_radius = options.blur_radius;
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
@@ -172,7 +176,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--reflections", options.reflections,
                       "Reflections: off (direct light only), ssr (screen space only), hybrid (SSR, rays where it "
-                      "failed) or rt (rays for every reflective pixel: the reference)")
+                      "failed), rt (rays for every reflective pixel: the reference) or auto (per 8x8 tile: SSR "
+                      "only, SSR + rays or rays only, from SSR's failures and measured costs; docs/hybrid.md)")
       ->check(CLI::IsMember(render::kReflectionModeNames.names()))
       ->capture_default_str();
   command->add_option("--backend", options.backend,
@@ -297,6 +302,20 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--ssr-confidence", options.ssr_confidence,
                       "Lowest confidence of a trusted SSR hit; below it the pixel fails (0..1)")
+      ->check(CLI::Range(0.0f, 1.0f))
+      ->capture_default_str();
+  auto* ray_budget = command->add_option("--ray-budget", options.ray_budget,
+                                         "--reflections auto: most rays traced per frame (fast camera motion "
+                                         "lowers it, a still camera restores it)")
+                         ->check(CLI::Range(0LL, 0xffffffffLL));
+  command->add_option("--reflection-budget", options.reflection_budget_ms,
+                      "--reflections auto: milliseconds of reflection work (SSR, ray list, trace, hit shading) "
+                      "per frame, turned into rays by the measured costs")
+      ->check(CLI::PositiveNumber)
+      ->excludes(ray_budget);
+  command->add_option("--auto-quality", options.auto_quality,
+                      "--reflections auto: largest fraction of a tile's reflective pixels SSR may leave "
+                      "unreflected before the tile gets rays (0..1)")
       ->check(CLI::Range(0.0f, 1.0f))
       ->capture_default_str();
 }

@@ -14,7 +14,7 @@ namespace glint {
 
 struct RenderOptions {
   std::string scene = "atrium";
-  std::string reflections = "hybrid";  // off|ssr|hybrid|rt
+  std::string reflections = "hybrid";  // off|ssr|hybrid|rt|auto
   std::string backend = "cpu";         // ray tracing backend (hybrid, rt): cpu|embree|cuda|optix
   // cpu and cuda backends' BLAS builder (accel::builder_name); optix: optix-fasttrace|optix-fastbuild
   // (the default "sah" means optix-fasttrace there)
@@ -50,6 +50,12 @@ struct RenderOptions {
   int ssr_max_steps = 256;
   float ssr_thickness = 0.5f;
   float ssr_confidence = 0.9f;
+  // --reflections auto (render::AdaptiveSettings): rays per frame (-1: none) or milliseconds of
+  // reflection work per frame (0: none), and the largest fraction of a tile's reflective pixels left
+  // unreflected (SSR only).
+  long long ray_budget = -1;
+  double reflection_budget_ms = 0.0;
+  float auto_quality = 0.0f;
   std::string command_line;       // for run.json, set by the CLI
 };
 

@@ -63,7 +63,11 @@ nlohmann::json options_summary(const RenderOptions& options) {
           {"shadows", options.shadows},
           {"ssr_max_steps", options.ssr_max_steps},
           {"ssr_thickness", options.ssr_thickness},
-          {"ssr_confidence", options.ssr_confidence}};
+          {"ssr_confidence", options.ssr_confidence},
+          {"ray_budget", options.ray_budget >= 0 ? nlohmann::json(options.ray_budget) : nlohmann::json(nullptr)},
+          {"reflection_budget_ms",
+           options.reflection_budget_ms > 0.0 ? nlohmann::json(options.reflection_budget_ms) : nlohmann::json(nullptr)},
+          {"auto_quality", options.auto_quality}};
 }
 
 }  // namespace
@@ -94,6 +98,11 @@ std::vector<std::string> RenderRunRecord::timings_header() {
   for (const char* column : {"gpu_total_ms", "frame_ms", "frame_latency_ms", "deform_ms", "accel_update_ms", "trace_ms", "triangles",
                              "reflective_pixels", "ssr_failed_pixels", "rays_traced", "resident_mb",
                              "gpu_memory_used_mb"})
+    header.emplace_back(column);
+  // --reflections auto (docs/hybrid.md "auto"): its tile classification pass, tiles per class, the
+  // frame's ray budget after camera motion (empty: none), motion's share of it, rays asked for.
+  for (const char* column : {"classify_ms", "tiles_none", "tiles_ssr_only", "tiles_ssr_fallback", "tiles_rt_only",
+                             "ray_budget", "budget_factor", "rays_wanted"})
     header.emplace_back(column);
   return header;
 }
@@ -129,11 +138,26 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   row.emplace_back(frame.accel_update_ms ? CsvField(*frame.accel_update_ms) : CsvField(""));
   row.emplace_back(rays ? CsvField(rays->trace_ms) : CsvField(""));
   row.emplace_back(triangles_);
-  row.emplace_back(ssr ? CsvField(ssr->reflective) : rays ? CsvField(rays->reflective_pixels) : CsvField(""));
+  const auto& adaptive = frame.adaptive;
+  // auto's SSR and ray list see only their tiles: the classification counted every reflective pixel.
+  row.emplace_back(adaptive ? CsvField(adaptive->reflective_pixels)
+                   : ssr    ? CsvField(ssr->reflective)
+                   : rays   ? CsvField(rays->reflective_pixels)
+                            : CsvField(""));
   row.emplace_back(ssr ? CsvField(ssr->failed) : CsvField(""));
   row.emplace_back(rays ? CsvField(rays->rays_traced) : CsvField(""));
   row.emplace_back(megabytes_field(frame.resident_bytes));
   row.emplace_back(megabytes_field(frame.gpu_memory_used_bytes));
+  std::optional<double> classify_ms;
+  for (const PassTime& time : frame.times.passes)
+    if (time.name == "classify") classify_ms = classify_ms.value_or(0.0) + time.milliseconds;
+  row.emplace_back(classify_ms ? CsvField(*classify_ms) : CsvField(""));
+  for (std::size_t c = 0; c < render::kTileClassCount; ++c)
+    row.emplace_back(adaptive ? CsvField(adaptive->class_tiles[c]) : CsvField(""));
+  row.emplace_back(adaptive && adaptive->ray_budget ? CsvField(*adaptive->ray_budget) : CsvField(""));
+  row.emplace_back(adaptive ? CsvField(static_cast<double>(adaptive->budget_factor)) : CsvField(""));
+  row.emplace_back(adaptive ? CsvField(adaptive->rays_wanted) : CsvField(""));
+  if (classify_ms) recorded["classify_ms"] = *classify_ms;
   resident_.add(frame.resident_bytes);
   gpu_memory_.add(frame.gpu_memory_used_bytes);
   recorded["gpu_total_ms"] = gpu_total_ms;

@@ -58,4 +58,20 @@ ImageRgba8 reflection_view(const ImageRgbaF& reflection) {
   });
 }
 
+ImageRgba8 tile_class_view(std::span<const TileClass> classes, int tile_columns, int width, int height) {
+  static constexpr glm::u8vec4 kColours[kTileClassCount] = {
+      {0, 0, 0, 255}, {40, 170, 60, 255}, {230, 200, 40, 255}, {220, 50, 40, 255}};
+  ImageRgba8 image(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const int gl_y = height - 1 - y;  // the tiles' rows count from the bottom, as GL's
+      const auto tile = static_cast<std::size_t>((gl_y / 8) * tile_columns + x / 8);
+      glm::u8vec4 colour = tile < classes.size() ? kColours[static_cast<std::size_t>(classes[tile]) % kTileClassCount]
+                                                 : kColours[0];
+      if (x % 8 == 0 || gl_y % 8 == 0) colour = glm::u8vec4(glm::uvec4(colour) * 3u / 4u);
+      image.at(x, y) = colour;
+    }
+  return image;
+}
+
 }  // namespace glint::render

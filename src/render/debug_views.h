@@ -5,6 +5,9 @@
 #include "core/image.h"
 #include "core/math.h"
 #include "render/frame_constants.h"
+#include "render/tile_classification.h"
+
+#include <span>
 
 namespace glint::render {
 
@@ -21,5 +24,9 @@ ImageRgba8 depth_view(const ImageRgbaF& world_position, const FrameConstants& fr
 ImageRgba8 grey_view(const ImageRgbaF& image);
 // The reflection colour through a Reinhard curve (HDR), black where no reflection was found.
 ImageRgba8 reflection_view(const ImageRgbaF& reflection);
+// --reflections auto's decision per 8x8 tile (classes row-major, tile_columns per row, rows bottom
+// first as GL's): none black, SSR only green, SSR + rays yellow, rays only red; each tile's border
+// pixel darker so the grid shows.
+ImageRgba8 tile_class_view(std::span<const TileClass> classes, int tile_columns, int width, int height);
 
 }  // namespace glint::render

@@ -58,6 +58,7 @@ void FramePipelineSettings::validate() const {
   render::validate(ssr);
   render::validate(resolve);
   shadows.validate();
+  if (reflections == ReflectionMode::adaptive) adaptive.validate();
   if (uses_ray_tracer(*this)) ray_tracing.validate();
 }
 
@@ -75,6 +76,11 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
   if (settings_.shadows.method != ShadowMethod::cube)
     shadow_rays_.emplace(scene, width, height, settings_.shadows.method, *tracer_,
                          settings_.ray_tracing.origin_offset_fraction, settings_.shadows.hybrid_depth_edge_fraction);
+  if (settings_.reflections == ReflectionMode::adaptive) {
+    const bool device = tracer_->device_tracing() != nullptr || tracer_->gl_tracing() != nullptr;
+    adaptive_.emplace(width, height, settings_.adaptive, device, length(scene.world_bounds().extent()));
+    ssr_->set_tile_list(adaptive_->pass().ssr_tiles());
+  }
   if (!ssr_) {
     own_reflection_ = make_reflection_image(width, height);
     clear_reflection(own_reflection_.id());
@@ -113,6 +119,15 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     shadow.after_cube = [&] { shadow_rays_->run(raster_); };
   }
   raster_.render(frame, timer, shadow);
+  if (adaptive_) {
+    // Before SSR, which overwrites the failure mask the classification reads as last frame's.
+    run_timed_pass(timer, "classify", [&] {
+      adaptive_->classify({raster_.albedo_reflectivity(), raster_.world_position(), ssr_->failure_mask(),
+                           ssr_->reflection(), raster_.frame_constants().view_projection},
+                          frame.camera, slot);
+    });
+    ray_traced_->ray_list().set_tiles(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()});
+  }
   if (ssr_) {
     run_timed_pass(timer, "ssr", [&] {
       ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
@@ -125,6 +140,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     if (!ssr_) clear_reflection(own_reflection_.id());
     ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
   }
+  if (adaptive_) adaptive_->finish_frame(slot);
   run_timed_pass(timer, "resolve",
                  [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image()}); });
   final_captured_[slot] = final_readback_.has_value();
@@ -161,6 +177,10 @@ std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, b
     readback.ray_stats = ray_traced_->take_stats(ray_traced_->runs() - (frames_rendered_ - frame), wait);
     if (!readback.ray_stats) return std::nullopt;
   }
+  if (adaptive_) {
+    readback.adaptive = adaptive_->take_stats(slot, wait);
+    if (!readback.adaptive) return std::nullopt;
+  }
   if (final_readback_ && final_captured_[slot]) {
     const std::span<const std::byte> bytes = final_readback_->read(slot, wait);
     if (bytes.empty()) return std::nullopt;
@@ -172,6 +192,21 @@ std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, b
     readback.final_image = std::move(image);
   }
   return readback;
+}
+
+void FramePipeline::observe(const FrameTimes& times, const FrameReadback& readback) {
+  if (!adaptive_) return;
+  CostSample sample;
+  for (const PassTime& pass : times.passes) {
+    if (pass.name == "ssr") sample.ssr_ms += pass.milliseconds;
+    if (pass.name == "ray_list" || pass.name == "hit_shade") sample.ray_ms += pass.milliseconds;
+  }
+  if (readback.ssr_counts) sample.ssr_pixels = readback.ssr_counts->reflective;
+  if (readback.ray_stats) {
+    sample.rays = readback.ray_stats->rays_traced;
+    sample.ray_ms += readback.ray_stats->trace_ms;  // every backend's trace, the gl backend's pass too
+  }
+  adaptive_->observe(sample);
 }
 
 ImageRgba8 FramePipeline::read_final() const {
@@ -196,6 +231,10 @@ std::vector<DebugView> FramePipeline::read_debug_views() const {
   views.push_back({"depth", depth_view(raster_.read_rgbaf(RasterOutput::WorldPosition), raster_.frame_constants())});
   views.push_back({"shadow_mask", grey_view(raster_.read_rgbaf(RasterOutput::ShadowMask))});
   if (settings_.reflections == ReflectionMode::off) return views;
+  if (adaptive_) {
+    const TileFrameReadback tiles = adaptive_->pass().read();
+    views.push_back({"tile_classes", tile_class_view(tiles.classes, adaptive_->pass().tile_columns(), width(), height())});
+  }
 
   const ImageRgbaF reflection = read_texture_rgbaf(reflection_image(), kReflectionFormat, width(), height());
   if (!ssr_) {

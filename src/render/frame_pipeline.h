@@ -18,6 +18,7 @@
 #include "gl/gl_objects.h"
 #include "gl/gpu_timer.h"
 #include "gl/readback_ring.h"
+#include "render/adaptive_reflections.h"
 #include "render/raster_pipeline.h"
 #include "render/raster_settings.h"
 #include "render/ray_traced_reflections.h"
@@ -54,6 +55,7 @@ struct FramePipelineSettings {
   ResolveSettings resolve;
   RayTracingSettings ray_tracing;  // hybrid and rt reflections, rt and hybrid shadows
   ShadowSettings shadows;          // cube (default), rt or hybrid
+  AdaptiveSettings adaptive;       // --reflections auto: budget, quality target
 
   void validate() const;  // throws glint::Error naming the first bad setting
 };
@@ -67,6 +69,7 @@ struct FrameReadback {
   std::optional<SsrCounts> ssr_counts;           // with SSR
   std::optional<RayTraceFrameStats> ray_stats;   // with ray tracing
   std::optional<ImageRgba8> final_image;         // with set_final_capture(true): read_final()'s pixels
+  std::optional<AdaptiveFrameStats> adaptive;    // --reflections auto: what its tiles were
 };
 
 // An image a frame produced besides the final one, made viewable as 8-bit RGBA.
@@ -103,6 +106,11 @@ public:
   // nullopt while the GPU has not finished their copies and `wait` is false; with `wait` it waits.
   // glint::Error for an older or a future frame.
   std::optional<FrameReadback> take_readback(std::uint64_t frame, bool wait);
+  // A finished frame's pass times and counts (FrameLoop calls it as it reads them): --reflections
+  // auto's cost model learns from them; nothing happens in the other modes.
+  void observe(const FrameTimes& times, const FrameReadback& readback);
+  // --reflections auto's tile decisions; null in the other modes.
+  const AdaptiveReflections* adaptive() const { return adaptive_ ? &*adaptive_ : nullptr; }
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
   ImageRgba8 read_final() const;
@@ -141,6 +149,7 @@ private:
   std::optional<SsrPass> ssr_;
   std::unique_ptr<rt::RayTracer> tracer_;  // shared by ray_traced_ and shadow_rays_
   std::optional<RayTracedReflections> ray_traced_;
+  std::optional<AdaptiveReflections> adaptive_;  // --reflections auto
   std::optional<RayTracedShadows> shadow_rays_;
   ResolvePass resolve_;
   // The reflection image when SSR does not make one: all zero (off), or cleared and filled by the

@@ -8,6 +8,7 @@
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -19,7 +20,10 @@ constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kFailureMa
 }  // namespace
 
 RayListPass::RayListPass(int width, int height, RayHitBuffers& buffers)
-    : program_(ShaderProgram::from_embedded({"ray_list.comp.glsl"})), buffers_(&buffers), width_(width),
+    : program_(ShaderProgram::from_embedded({"ray_list.comp.glsl"})),
+      clamp_program_(ShaderProgram::from_embedded({"ray_budget_clamp.comp.glsl"})),
+      buffers_(&buffers),
+      width_(width),
       height_(height) {
   require_pass_size("ray list", width, height);
   const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
@@ -29,6 +33,10 @@ RayListPass::RayListPass(int width, int height, RayHitBuffers& buffers)
   no_failure_mask_ = create_texture_2d(kFailureMaskFormat, 1, 1);
   set_origin_offset(0.0f);
   check_gl("ray list: set-up");
+}
+
+std::uint32_t RayListPass::capacity_limit() const {
+  return static_cast<std::uint32_t>(std::min<std::size_t>(buffers_->capacity(), 0x7fffffffu));
 }
 
 void RayListPass::set_origin_offset(float offset) {
@@ -56,11 +64,19 @@ void RayListPass::run(const RayListInputs& inputs) {
   glBindImageTexture(kFailureMaskUnit, trace_all ? no_failure_mask_.id() : inputs.failure_mask, 0, GL_FALSE, 0,
                      GL_READ_ONLY, kFailureMaskFormat);
   program_.set_uniform("trace_all", trace_all ? 1 : 0);
-  program_.use();
-  dispatch_over_image(width_, height_);
+  const std::uint32_t max_rays = tiles_ ? std::min<std::uint32_t>(tiles_->max_rays, capacity_limit()) : capacity_limit();
+  program_.set_uniform("max_rays", static_cast<int>(max_rays));
+  dispatch_image_or_tiles(program_, tiles_ ? std::optional(tiles_->tiles) : std::nullopt, width_, height_);
   // Hit shading reads the pixel list as a storage buffer; the CPU's view is made visible by
   // RayHitBuffers::finish_ray_list().
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (tiles_) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileDispatchBinding, tiles_->tiles.dispatch_buffer);
+    clamp_program_.set_uniform("max_rays", static_cast<int>(max_rays));
+    clamp_program_.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  }
   check_gl("ray list");
 }
 

@@ -7,10 +7,22 @@
 //   outputs: RayHitBuffers rays [0, count), pixels [0, count), counters
 #include "gl/shader_program.h"
 #include "render/ray_hit_buffers.h"
+#include "render/tile_dispatch.h"
 
 #include <epoxy/gl.h>
 
+#include <cstdint>
+#include <optional>
+
 namespace glint::render {
+
+// --reflections auto: the ray list runs over the tiles of a list (render/tile_dispatch.h) and lists
+// at most max_rays rays (the frame's budget; the rest of the pixels that wanted one keep what SSR
+// gave them).
+struct RayListTiles {
+  TileListDispatch tiles;
+  std::uint32_t max_rays = 0;
+};
 
 struct RayListInputs {
   GLuint albedo_reflectivity = 0;  // kAlbedoReflectivityFormat
@@ -34,8 +46,15 @@ public:
   // naming the input). Call buffers.finish_ray_list() to read the count and the rays.
   void run(const RayListInputs& inputs);
 
+  // From the next run() on: only the listed tiles, within a budget (nullopt: the whole image, no budget).
+  void set_tiles(const std::optional<RayListTiles>& tiles) { tiles_ = tiles; }
+
 private:
+  std::uint32_t capacity_limit() const;  // the buffers' capacity, as a GLSL int
+
   ShaderProgram program_;
+  ShaderProgram clamp_program_;  // ray_budget_clamp.comp.glsl
+  std::optional<RayListTiles> tiles_;
   RayHitBuffers* buffers_;
   int width_, height_;
   GlTexture no_failure_mask_;  // bound in rt mode: the shader ignores it there

@@ -92,6 +92,7 @@ public:
   // The GPU backend's device side, or null for a CPU backend.
   rt::DeviceTracing* device_tracing() { return device_; }
   const RayTracingSettings& settings() const { return settings_; }
+  RayListPass& ray_list() { return ray_list_; }  // --reflections auto sets its tiles and budget
   // The rays and hits of the last run (tests), and the hits' shadow rays (null without shadow rays).
   const RayHitBuffers& ray_buffers() const { return buffers_; }
   const HitShadowRays* hit_shadow_rays() const { return hit_shadows_ ? &*hit_shadows_ : nullptr; }

@@ -2,8 +2,12 @@
 
 namespace glint::render {
 
-bool uses_ssr(ReflectionMode mode) { return mode == ReflectionMode::ssr || mode == ReflectionMode::hybrid; }
+bool uses_ssr(ReflectionMode mode) {
+  return mode == ReflectionMode::ssr || mode == ReflectionMode::hybrid || mode == ReflectionMode::adaptive;
+}
 
-bool uses_ray_tracing(ReflectionMode mode) { return mode == ReflectionMode::hybrid || mode == ReflectionMode::rt; }
+bool uses_ray_tracing(ReflectionMode mode) {
+  return mode == ReflectionMode::hybrid || mode == ReflectionMode::rt || mode == ReflectionMode::adaptive;
+}
 
 }  // namespace glint::render

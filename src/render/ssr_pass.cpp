@@ -71,8 +71,7 @@ void SsrPass::run(const SsrInputs& inputs) {
   glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
 
-  program_.use();
-  dispatch_over_image(width_, height_);
+  dispatch_image_or_tiles(program_, tiles_, width_, height_);
   // Later passes read the outputs as images or textures, the ray-trace step reads the counters as a
   // buffer, and tests read everything back.
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

@@ -13,6 +13,7 @@
 #include "gl/readback_ring.h"
 #include "gl/shader_program.h"
 #include "render/ssr_settings.h"
+#include "render/tile_dispatch.h"
 
 #include <epoxy/gl.h>
 
@@ -47,6 +48,9 @@ public:
   // Recreates the outputs for a new size (their contents are undefined until the next run()).
   void resize(int width, int height);
   void set_settings(const SsrSettings& settings);  // validated; throws glint::Error
+  // --reflections auto: run() marches only the tiles of this list (one work group per listed tile,
+  // an indirect dispatch; render/tile_dispatch.h); pixels of other tiles are left as they were.
+  void set_tile_list(const std::optional<TileListDispatch>& tiles) { tiles_ = tiles; }
   const SsrSettings& settings() const { return settings_; }
 
   // Clears the counters and dispatches the march. Inputs are checked (ids, sizes, formats) and a
@@ -78,6 +82,7 @@ private:
   GlTexture failure_mask_;
   GlBuffer counters_;
   ReadbackRing counts_readback_;
+  std::optional<TileListDispatch> tiles_;
 };
 
 }  // namespace glint::render
