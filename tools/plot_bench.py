@@ -11,6 +11,9 @@ Reads DIR/summary.json (written by `glint bench`) and writes DIR/charts/<name>.p
   fig12                          ssr, hybrid and rt along the walkthrough, static and deforming
   fig4                           the full scene's floor plan with the camera and light paths
   table1, table2                 colour buckets and SSIM of ssr and hybrid against rt per frame
+  adaptive                       (--experiment adaptive) per scene, SSIM and PSNR against rt over the
+                                 reflection cost of ssr, hybrid, rt and auto at its budgets, the
+                                 Pareto front joined
 Needs python3-matplotlib only. glint copies this script next to its results; the source is
 tools/plot_bench.py in the glint repository.
 """
@@ -34,7 +37,7 @@ QUALITY_TABLES = {
     "table1": "Table I: quality against rt, static",
     "table2": "Table II: quality against rt, simplified scene, deforming",
 }
-MODE_COLOURS = {"ssr": "tab:green", "hybrid": "tab:blue", "rt": "tab:red"}
+MODE_COLOURS = {"ssr": "tab:green", "hybrid": "tab:blue", "rt": "tab:red", "auto": "tab:purple"}
 
 
 def done_cells(summary, figure):
@@ -219,6 +222,34 @@ def plot_quality(summary, table, title, out_dir):
     return True
 
 
+def plot_adaptive(summary, out_dir):
+    """--experiment adaptive: quality against reflection cost per scene, the Pareto front joined."""
+    scenes = summary.get("scenes", [])
+    if summary.get("experiment") != "adaptive" or not scenes:
+        return False
+    fig, axes = plt.subplots(2, len(scenes), figsize=(max(8.0, 5.5 * len(scenes)), 8), squeeze=False)
+    for column, scene in enumerate(scenes):
+        configs = scene["configs"]
+        for row, (key, label) in enumerate((("ssim", "SSIM vs rt (luma)"), ("psnr_db", "PSNR vs rt (dB)"))):
+            ax = axes[row][column]
+            for point in configs:
+                colour = MODE_COLOURS.get(point["reflections"], "tab:gray")
+                ax.scatter(point["reflection_ms"], point[key], color=colour, s=40, zorder=3)
+                ax.annotate(point["label"], (point["reflection_ms"], point[key]), textcoords="offset points",
+                            xytext=(4, 4), fontsize=8)
+            front = sorted((p for p in configs if p["pareto"]), key=lambda p: p["reflection_ms"])
+            ax.plot([p["reflection_ms"] for p in front], [p[key] for p in front], color="black", linewidth=1,
+                    linestyle="--", label="Pareto front (SSIM)", zorder=2)
+            style_axes(ax, scene["scene"], "reflection cost (ms: SSR + ray list + trace + hit shade)", label)
+            if row == 0 and column == 0:
+                ax.legend(fontsize=8)
+    s = summary["settings"]
+    fig.suptitle("Reflection quality against cost ({}x{}, {} backend, {})".format(
+        s["width"], s["height"], s["backend"], summary["environment"]["gl"]["renderer"]))
+    save(fig, out_dir, "adaptive")
+    return True
+
+
 def main(argv):
     if len(argv) != 2:
         sys.stderr.write("usage: python3 plot_bench.py DIR  (DIR holds summary.json from glint bench)\n")
@@ -228,6 +259,9 @@ def main(argv):
         summary = json.load(file)
     out_dir = os.path.join(folder, "charts")
     os.makedirs(out_dir, exist_ok=True)
+    if plot_adaptive(summary, out_dir):
+        print("charts: adaptive")
+        return 0
     made = []
     for figure, title in FRAME_FIGURES.items():
         if plot_frame_figure(summary, figure, title, out_dir):

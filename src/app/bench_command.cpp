@@ -2,6 +2,7 @@
 
 #include "accel/builders/builder.h"
 #include "rt/blas_structure.h"
+#include "app/bench/adaptive_experiment.h"
 #include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_report.h"
@@ -44,7 +45,7 @@ using bench::Cell;
 using bench::CellKind;
 using bench::CellOutcome;
 
-constexpr const char* kExperiments[] = {"paper"};
+constexpr const char* kExperiments[] = {"paper", "adaptive"};
 
 // A cell of this run: what it is, its frames and what became of it.
 struct PlannedCell {
@@ -70,7 +71,7 @@ std::string joined(const std::vector<std::string>& items) {
 void check_options(const BenchOptions& options) {
   bool known = false;
   for (const char* experiment : kExperiments) known = known || options.experiment == experiment;
-  if (!known) fail("--experiment: unknown experiment \"{}\" (known: paper)", options.experiment);
+  if (!known) fail("--experiment: unknown experiment \"{}\" (known: paper, adaptive)", options.experiment);
 }
 
 // The settings every kept cell must share with this run (resume.h).
@@ -191,7 +192,10 @@ BenchOptions with_quick_defaults(BenchOptions options) {
 void add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* command = app.add_subcommand(
       "bench", "Run the paper's experiment matrix (Figs. 5, 7-10, 12, Tables I-II): CSVs, summary.json, charts, report.md");
-  command->add_option("--experiment", options.experiment, "Experiment to run: paper")->required();
+  command->add_option("--experiment", options.experiment,
+                      "Experiment to run: paper, or adaptive (quality vs reflection cost of ssr, hybrid, rt and auto; "
+                      "docs/bench.md)")
+      ->required();
   command->add_option("--scene", options.scene, "Full scene (Figs. 5, 7, Table I): atrium, sponza or a scene file")
       ->capture_default_str();
   command->add_option("--simple-scene", options.simple_scene,
@@ -246,6 +250,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
 int run_bench_command(const BenchOptions& given_options) {
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
+  if (options.experiment == "adaptive") return bench::run_adaptive_experiment(options);
   const std::vector<std::string> known_backends = backends::backend_names();
   const std::vector<std::string> known_accels = rt::blas_structure_names();
   const std::vector<std::string> backends = parse_name_list("--backends", options.backends, known_backends);

@@ -1,0 +1,259 @@
+#include "app/bench/adaptive_experiment.h"
+
+#include "app/bench/backend_availability.h"
+#include "app/bench/bench_environment.h"
+#include "app/bench/bench_summary.h"
+#include "app/bench/paper_matrix.h"
+#include "app/bench/plot_script.h"
+#include "app/frame_loop.h"
+#include "app/output_folder.h"
+#include "app/render_command.h"
+#include "backends/registry.h"
+#include "core/atomic_file.h"
+#include "core/csv_writer.h"
+#include "core/error.h"
+#include "core/image.h"
+#include "core/interruption.h"
+#include "core/log.h"
+#include "core/progress_bar.h"
+#include "core/utc_timestamp.h"
+#include "gl/egl_context.h"
+#include "metrics/image_comparison.h"
+#include "scene/load_scene.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace glint::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+// PSNR of identical images is infinite; tables and charts show this instead.
+constexpr double kIdenticalPsnr = 100.0;
+
+// What one configuration measured at one frame.
+struct AdaptivePoint {
+  double ssr_ms = 0.0, ray_list_ms = 0.0, trace_ms = 0.0, hit_shade_ms = 0.0, classify_ms = 0.0;
+  double rays = 0.0, reflective = 0.0;
+  double ssim = 1.0, psnr = kIdenticalPsnr;
+  double reflection_ms() const { return ssr_ms + ray_list_ms + trace_ms + hit_shade_ms + classify_ms; }
+};
+
+std::string first_available_backend(const BenchOptions& options) {
+  for (const std::string& backend : parse_name_list("--backends", options.backends, backends::backend_names()))
+    if (!backend_unavailable_reason(backend)) return backend;
+  fail("--backends: none of {} can run here", options.backends);
+}
+
+RenderOptions render_options(const std::string& scene, const AdaptiveConfig& config, const std::string& backend,
+                             const BenchOptions& options) {
+  RenderOptions render;
+  render.scene = scene;
+  render.reflections = config.reflections;
+  render.ray_budget = config.ray_budget;
+  render.backend = backend;
+  render.width = options.width;
+  render.height = options.height;
+  render.timings_only = true;
+  render.deform = "off";  // Table I's static frames: every configuration sees the same geometry
+  render.shadow_map_size = options.shadow_map_size;
+  render.gbuffer = options.gbuffer;
+  render.shadows = options.shadows;
+  render.command_line = options.command_line;
+  return render;
+}
+
+AdaptivePoint measured_point(const FrameMeasurement& frame) {
+  AdaptivePoint point;
+  for (const PassTime& pass : frame.times.passes) {
+    if (pass.name == "ssr") point.ssr_ms += pass.milliseconds;
+    if (pass.name == "ray_list") point.ray_list_ms += pass.milliseconds;
+    if (pass.name == "hit_shade") point.hit_shade_ms += pass.milliseconds;
+    if (pass.name == "classify") point.classify_ms += pass.milliseconds;
+  }
+  if (frame.ray_stats) {
+    point.trace_ms = frame.ray_stats->trace_ms;
+    point.rays = frame.ray_stats->rays_traced;
+  }
+  point.reflective = frame.adaptive       ? frame.adaptive->reflective_pixels
+                     : frame.ssr_counts   ? frame.ssr_counts->reflective
+                     : frame.ray_stats    ? frame.ray_stats->reflective_pixels
+                                          : 0.0;
+  return point;
+}
+
+double finite_psnr(double psnr) { return std::isfinite(psnr) ? std::min(psnr, kIdenticalPsnr) : kIdenticalPsnr; }
+
+std::string markdown_table(const nlohmann::json& scene) {
+  std::string text = "| configuration | reflection ms | SSR | ray list | trace | hit shade | classify | rays / "
+                     "reflective px | SSIM vs rt | PSNR vs rt (dB) | Pareto |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const nlohmann::json& point : scene["configs"])
+    text += fmt::format("| {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {:.4f} | {:.1f} | {} |\n",
+                        point["label"].get<std::string>(), point["reflection_ms"].get<double>(),
+                        point["ssr_ms"].get<double>(), point["ray_list_ms"].get<double>(),
+                        point["trace_ms"].get<double>(), point["hit_shade_ms"].get<double>(),
+                        point["classify_ms"].get<double>(), point["rays_per_reflective_pixel"].get<double>(),
+                        point["ssim"].get<double>(), point["psnr_db"].get<double>(),
+                        point["pareto"].get<bool>() ? "yes" : "");
+  return text;
+}
+
+}  // namespace
+
+std::vector<AdaptiveConfig> adaptive_configs(int width, int height) {
+  std::vector<AdaptiveConfig> configs{{"rt", "rt", -1}, {"ssr", "ssr", -1}, {"hybrid", "hybrid", -1}, {"auto", "auto", -1}};
+  const double pixels = static_cast<double>(width) * static_cast<double>(height);
+  for (const double fraction : kAdaptiveBudgetFractions)
+    configs.push_back({fmt::format("auto-{:g}%", fraction * 100.0), "auto",
+                       static_cast<long long>(std::llround(fraction * pixels))});
+  return configs;
+}
+
+std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vector<double>& quality) {
+  std::vector<bool> front(cost.size(), true);
+  for (std::size_t i = 0; i < cost.size(); ++i)
+    for (std::size_t j = 0; j < cost.size() && front[i]; ++j)
+      if (j != i && cost[j] <= cost[i] && quality[j] >= quality[i] && (cost[j] < cost[i] || quality[j] > quality[i]))
+        front[i] = false;
+  return front;
+}
+
+int run_adaptive_experiment(const BenchOptions& options) {
+  const fs::path out = options.out;
+  const std::string backend = first_available_backend(options);
+  const std::vector<AdaptiveConfig> configs = adaptive_configs(options.width, options.height);
+  std::vector<std::string> scene_names{options.scene};
+  if (options.simple_scene != options.scene) scene_names.push_back(options.simple_scene);
+  std::map<std::string, Scene> scenes;
+  for (const std::string& name : scene_names) scenes.emplace(name, load_scene(name));
+
+  const OutputFolder folder(out);
+  HeadlessGlContext context;
+  std::size_t ticks = 0;
+  for (const std::string& name : scene_names)
+    ticks += configs.size() * quality_frames(scenes.at(name).walkthrough.frame_count).size();
+  ProgressBar progress("bench adaptive", ticks);
+  const InterruptionScope interruptible;
+
+  CsvWriter csv(out / "adaptive.csv", {"scene", "frame", "config", "reflections", "ray_budget", "reflection_ms",
+                                       "ssr_ms", "ray_list_ms", "trace_ms", "hit_shade_ms", "classify_ms", "rays",
+                                       "reflective_pixels", "rays_per_reflective_pixel", "ssim_luma", "psnr_db"});
+  nlohmann::json scene_entries = nlohmann::json::array();
+  for (const std::string& name : scene_names) {
+    Scene& scene = scenes.at(name);
+    const std::vector<int> frames = quality_frames(scene.walkthrough.frame_count);
+    std::map<std::string, std::vector<AdaptivePoint>> points;
+    std::vector<ImageRgba8> reference;
+    for (const AdaptiveConfig& config : configs) {
+      const RenderOptions render = render_options(name, config, backend, options);
+      FrameLoop loop(scene, render_pipeline_settings(render), {render.width, render.height, false},
+                     pass_timing_for_renderer(context.renderer()));
+      for (std::size_t f = 0; f < frames.size(); ++f) {
+        throw_if_interrupted("bench");
+        // The walkthrough's frames just before: auto's history, and every pass warm.
+        for (int before = std::min(options.warmup, frames[f]); before > 0; --before) (void)loop.run(frames[f] - before);
+        AdaptivePoint point = measured_point(loop.run(frames[f]));
+        ImageRgba8 image = loop.pipeline().read_final();
+        if (config.label == "rt") {
+          reference.push_back(std::move(image));
+        } else {
+          const metrics::ImageComparison c = metrics::compare_images(image, reference.at(f), config.label, "rt");
+          point.ssim = c.ssim.luma;
+          point.psnr = finite_psnr(c.error.psnr);
+        }
+        csv.add_row({name, frames[f], config.label, config.reflections,
+                     config.ray_budget >= 0 ? CsvField(config.ray_budget) : CsvField(""), point.reflection_ms(),
+                     point.ssr_ms, point.ray_list_ms, point.trace_ms, point.hit_shade_ms, point.classify_ms,
+                     point.rays, point.reflective, point.reflective > 0 ? point.rays / point.reflective : 0.0,
+                     point.ssim, point.psnr});
+        points[config.label].push_back(point);
+        progress.tick();
+      }
+    }
+    // Means over the frames, and the Pareto front of (reflection ms, SSIM).
+    nlohmann::json entries = nlohmann::json::array();
+    std::vector<double> cost, quality;
+    for (const AdaptiveConfig& config : configs) {
+      const std::vector<AdaptivePoint>& list = points.at(config.label);
+      const auto mean = [&](auto member) {
+        double sum = 0.0;
+        for (const AdaptivePoint& p : list) sum += member(p);
+        return list.empty() ? 0.0 : sum / static_cast<double>(list.size());
+      };
+      const double rays = mean([](const AdaptivePoint& p) { return p.rays; });
+      const double reflective = mean([](const AdaptivePoint& p) { return p.reflective; });
+      nlohmann::json entry = {{"label", config.label},
+                              {"reflections", config.reflections},
+                              {"ray_budget", config.ray_budget >= 0 ? nlohmann::json(config.ray_budget) : nullptr},
+                              {"reflection_ms", mean([](const AdaptivePoint& p) { return p.reflection_ms(); })},
+                              {"ssr_ms", mean([](const AdaptivePoint& p) { return p.ssr_ms; })},
+                              {"ray_list_ms", mean([](const AdaptivePoint& p) { return p.ray_list_ms; })},
+                              {"trace_ms", mean([](const AdaptivePoint& p) { return p.trace_ms; })},
+                              {"hit_shade_ms", mean([](const AdaptivePoint& p) { return p.hit_shade_ms; })},
+                              {"classify_ms", mean([](const AdaptivePoint& p) { return p.classify_ms; })},
+                              {"rays", rays},
+                              {"rays_per_reflective_pixel", reflective > 0.0 ? rays / reflective : 0.0},
+                              {"ssim", mean([](const AdaptivePoint& p) { return p.ssim; })},
+                              {"ssim_min", std::min_element(list.begin(), list.end(), [](const auto& a, const auto& b) {
+                                             return a.ssim < b.ssim;
+                                           })->ssim},
+                              {"psnr_db", mean([](const AdaptivePoint& p) { return p.psnr; })}};
+      cost.push_back(entry["reflection_ms"].get<double>());
+      quality.push_back(entry["ssim"].get<double>());
+      entries.push_back(std::move(entry));
+    }
+    const std::vector<bool> front = pareto_front(cost, quality);
+    for (std::size_t i = 0; i < entries.size(); ++i) entries[i]["pareto"] = static_cast<bool>(front[i]);
+    scene_entries.push_back({{"scene", name}, {"frames", frames}, {"configs", std::move(entries)}});
+  }
+  csv.commit();
+  progress.finish();
+
+  const nlohmann::json summary = {
+      {"experiment", "adaptive"},
+      {"command", options.command_line},
+      {"environment", describe_environment(context)},
+      {"settings",
+       {{"width", options.width}, {"height", options.height}, {"warmup_frames", options.warmup},
+        {"backend", backend}, {"gbuffer", options.gbuffer}, {"shadows", options.shadows},
+        {"shadow_map_size", options.shadow_map_size}}},
+      {"scenes", scene_entries}};
+  write_summary(out, summary);
+  std::string chart_note = options.no_plot ? fmt::format("charts not made (--no-plot); run: python3 {} {}",
+                                                         (out / "plot_bench.py").string(), out.string())
+                                           : plot_bench_charts(out);
+  if (options.no_plot) write_file_atomically(out / "plot_bench.py", kPlotBenchScript);
+  if (!chart_note.empty()) log_warning("{}", chart_note);
+
+  std::string report = fmt::format(
+      "# glint bench --experiment adaptive\n\n- date: {}\n- command: `{}`\n- renderer: {}\n- backend: {}\n"
+      "- resolution: {}x{}, {} walkthrough frame(s) before each measured frame\n\n"
+      "Quality (SSIM on luma, PSNR) against rt at the same frame, and the reflection cost: SSR + ray list + "
+      "trace + hit shading (+ auto's tile classification), means over the frames. auto-N% is auto with "
+      "--ray-budget N% of the image's pixels. Pareto: no other configuration is at most as dear and at least "
+      "as close to rt (SSIM). rt against itself is shown as SSIM 1, PSNR {} dB.\n\n![Pareto](charts/adaptive.png)\n",
+      utc_timestamp(), options.command_line, context.renderer(), backend, options.width, options.height, options.warmup,
+      kIdenticalPsnr);
+  for (const nlohmann::json& scene : scene_entries)
+    report += fmt::format("\n## {} (frames {})\n\n{}", scene["scene"].get<std::string>(), scene["frames"].dump(),
+                          markdown_table(scene));
+  if (!chart_note.empty()) report += "\n" + chart_note + "\n";
+  write_file_atomically(out / "report.md", report);
+  for (const nlohmann::json& scene : scene_entries) {
+    fmt::print("{}\n", scene["scene"].get<std::string>());
+    for (const nlohmann::json& point : scene["configs"])
+      fmt::print("  {:<10} {:9.3f} ms  {:6.3f} rays/px  SSIM {:.4f}  PSNR {:5.1f}{}\n",
+                 point["label"].get<std::string>(), point["reflection_ms"].get<double>(),
+                 point["rays_per_reflective_pixel"].get<double>(), point["ssim"].get<double>(),
+                 point["psnr_db"].get<double>(), point["pareto"].get<bool>() ? "  pareto" : "");
+  }
+  return 0;
+}
+
+}  // namespace glint::bench
