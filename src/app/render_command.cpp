@@ -357,8 +357,7 @@ int run_render_command(const RenderOptions& options) {
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracer(settings)) {
-    backends::check_backend_built(options.backend);
-    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+    backends::check_backend_runnable(options.backend);
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 

@@ -31,8 +31,7 @@ ImageRgba8 render_frame(const RenderOptions& options, int frame) {
   const std::vector<int> frames = selection.resolve(WalkthroughAnimation(scene).frame_count());
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   if (render::uses_ray_tracer(settings)) {
-    backends::check_backend_built(options.backend);
-    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("--backend " + options.backend).c_str());
+    backends::check_backend_runnable(options.backend);
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "cuda/cuda_ray_tracer.h"
+#include "cuda/device_query.h"
 #include "gl_rt/make_gl_ray_tracer.h"
 #include "optix/build_preference.h"
 #include "rt/cpu_ray_tracer.h"
@@ -92,6 +93,11 @@ const Backend& find_backend(std::string_view name) {
 void check_backend_built(std::string_view name) {
   const Backend& backend = find_backend(name);
   if (!backend.built()) fail("the {} backend is not in this build: {}", backend.name, backend.missing_from_build);
+}
+
+void check_backend_runnable(std::string_view name) {
+  check_backend_built(name);
+  if (is_gpu_backend(name)) require_cuda_gpu(("--backend " + std::string(name)).c_str());
 }
 
 std::unique_ptr<rt::RayTracer> make_ray_tracer(std::string_view name) {
