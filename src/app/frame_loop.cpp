@@ -86,7 +86,7 @@ void FrameLoop::read_cuda_times(DeformTimes& times) {
     times.accel_update_ms = pipeline_.device_tracing()->gpu_ms(*times.update_ticket, /*wait=*/true).value();
 }
 
-std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
+std::vector<FrameMeasurement> FrameLoop::submit(int frame, const std::optional<CameraState>& camera) {
   std::vector<FrameMeasurement> done;
   // Frames already finished, then (all slots in use) the oldest, however long it takes.
   while (in_flight_.size() > keep_in_flight_)
@@ -98,7 +98,9 @@ std::vector<FrameMeasurement> FrameLoop::submit(int frame) {
   timer_.begin_frame();  // the frame's latency starts here, before the deformation
   if (profiler_) profiler_->begin_frame();
   submitted.deform = deform(frame);
-  pipeline_.render(animation_.at(frame), &timer_);
+  FrameState state = animation_.at(frame);
+  if (camera) state.camera = *camera;
+  pipeline_.render(state, &timer_);
   if (profiler_) profiler_->end_frame();
   timer_.end_frame();
   submitted.done = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -122,8 +124,8 @@ std::vector<FrameMeasurement> FrameLoop::drain() {
   return done;
 }
 
-FrameMeasurement FrameLoop::run(int frame) {
-  std::vector<FrameMeasurement> done = submit(frame);
+FrameMeasurement FrameLoop::run(int frame, const std::optional<CameraState>& camera) {
+  std::vector<FrameMeasurement> done = submit(frame, camera);
   for (FrameMeasurement& finished : drain()) done.push_back(std::move(finished));
   if (done.empty() || done.back().frame != frame) fail("frame {}: the loop did not return it", frame);
   return std::move(done.back());

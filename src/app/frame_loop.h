@@ -98,13 +98,15 @@ public:
 
   // Issues walkthrough frame `frame` (deform, update, render) and returns the frames that finished
   // since the last call, oldest first (serialized: exactly this one). Waits only for the oldest
-  // frame in flight when kFramesInFlight are.
-  std::vector<FrameMeasurement> submit(int frame);
+  // frame in flight when kFramesInFlight are. With `camera` the frame is seen from there instead of
+  // the path's camera; everything else (deformation, structure update, light) is still frame
+  // `frame`'s: the viewer's free flight, which keeps the walkthrough's clock running.
+  std::vector<FrameMeasurement> submit(int frame, const std::optional<CameraState>& camera = std::nullopt);
   // Waits for every frame in flight and returns them, oldest first.
   std::vector<FrameMeasurement> drain();
   // submit() and drain(): this frame, complete; its final image stays in the pipeline
   // (pipeline().read_final()). For warm-up frames, quality images and tests.
-  FrameMeasurement run(int frame);
+  FrameMeasurement run(int frame, const std::optional<CameraState>& camera = std::nullopt);
   std::size_t frames_in_flight() const { return in_flight_.size(); }
 
   render::FramePipeline& pipeline() { return pipeline_; }

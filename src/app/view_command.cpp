@@ -27,6 +27,10 @@ void add_view_command(CLI::App& app, ViewOptions& options) {
   command->add_option("--script", options.script,
                       "Run the commands of FILE (set, frame, play, pause, camera, path, wait, screenshot, record, "
                       "reload, quit; docs/viewer.md)");
+  command->add_flag("--offscreen", options.offscreen,
+                    "Run the --script without a window, on a headless EGL context as `glint render` (NVIDIA's GPU "
+                    "on a GPU machine with no X server); the script must end with quit. Chosen by itself when "
+                    "there is no display");
   add_flat_normals_flag(*command, options.render.flat_normals);
 }
 
@@ -45,6 +49,7 @@ int run_view_command(const ViewOptions& options) {
   (void)render_pipeline_settings(launch.options);  // a bad combination is one line before the window opens
   launch.script = options.script;
   launch.frame = options.frame;
+  launch.offscreen = options.offscreen;
   return viewer::run_viewer(launch);
 }
 

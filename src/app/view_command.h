@@ -20,6 +20,7 @@ struct ViewOptions {
   std::string script;                // --script FILE
   int frame = 0;                     // --frame: the walkthrough frame shown first
   std::vector<std::string> settings;  // --set NAME=VALUE, applied in order
+  bool offscreen = false;            // --offscreen: the script without a window (headless EGL)
 };
 
 void add_view_command(CLI::App& app, ViewOptions& options);

@@ -114,6 +114,9 @@ public:
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
   ImageRgba8 read_final() const;
+  // The texture read_final() reads (kFinalFormat, bottom row first), rewritten by every render(): for
+  // showing a frame on the same context without a host round trip (the viewer copies it on the GPU).
+  GLuint final_texture() const { return resolve_.final_image(); }
   // Reflective and SSR-failed pixels of the last frame; nullopt when reflections are off (SSR did not
   // run, so nothing was counted). Waits for the GPU.
   std::optional<SsrCounts> read_counts() const;

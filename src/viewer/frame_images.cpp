@@ -1,12 +1,13 @@
 #include "viewer/frame_images.h"
 
+#include "core/error.h"
 #include "metrics/error_heatmap.h"
 #include "metrics/image_comparison.h"
 
 namespace glint::viewer {
 
 const ImageRgba8* FrameImages::find(const std::string& view) const {
-  if (view == "final") return &final_image;
+  if (view == "final") return final_image ? &*final_image : nullptr;
   if (view == "difference") return difference ? &difference->heatmap : nullptr;
   for (const render::DebugView& debug : views)
     if (debug.name == view) return &debug.image;
@@ -24,7 +25,8 @@ std::vector<std::filesystem::path> write_screenshot(const std::filesystem::path&
   const auto sibling = [&](const std::string& name) {
     return path.parent_path() / (path.stem().string() + "_" + name + ".png");
   };
-  write_png(path, images.final_image);
+  if (!images.final_image) fail("{}: the final image was not read", path.string());
+  write_png(path, *images.final_image);
   written.push_back(path);
   for (const render::DebugView& view : images.views) {
     write_png(sibling(view.name), view.image);

@@ -21,19 +21,21 @@ struct DifferenceFromRt {
 };
 
 struct FrameImages {
-  ImageRgba8 final_image;
+  // Read from the pipeline only when needed (screenshots, the difference): the viewer shows the
+  // final image from its GL texture.
+  std::optional<ImageRgba8> final_image;
   std::vector<render::DebugView> views;
   std::optional<DifferenceFromRt> difference;
 
   // The picture named `view` ("final", a debug view's name or "difference"); null when this frame
-  // has none of that name (an SSR view with rt reflections, say).
+  // has none of that name (an SSR view with rt reflections, say) or the final image was not read.
   const ImageRgba8* find(const std::string& view) const;
 };
 
 // Compares `final_image` with the rt reference of the same view.
 DifferenceFromRt difference_from_reference(const ImageRgba8& final_image, const ImageRgba8& reference);
 
-// Writes the final image to `path` and every other picture to "<stem>_<name>.png" beside it, each
+// Writes the final image (which must have been read) to `path` and every other picture to "<stem>_<name>.png" beside it, each
 // through a temporary (write_png), so an interrupted screenshot leaves whole files only. Returns the
 // paths written.
 std::vector<std::filesystem::path> write_screenshot(const std::filesystem::path& path, const FrameImages& images);

@@ -5,6 +5,8 @@
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 
 namespace glint::viewer {
@@ -18,15 +20,24 @@ std::string last_glfw_error() {
   return text;
 }
 
+std::string no_display_message() {
+  const char* display = std::getenv("DISPLAY");
+  return fmt::format(
+      "view: no display to open a window on ({}; DISPLAY is {}): run it on a desktop, over ssh -X, or under "
+      "xvfb-run -a (a --script ending in quit runs offscreen without one)",
+      last_glfw_error(), display != nullptr && *display != '\0' ? display : "not set");
+}
+
 }  // namespace
 
+std::optional<std::string> GlfwWindow::why_no_display() {
+  if (glfwInit() == GLFW_FALSE) return no_display_message();
+  glfwTerminate();
+  return std::nullopt;
+}
+
 GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
-  if (glfwInit() == GLFW_FALSE) {
-    const char* display = std::getenv("DISPLAY");
-    fail("view: no display to open a window on ({}; DISPLAY is {}): run it on a desktop, over ssh -X, or under "
-         "xvfb-run -a",
-         last_glfw_error(), display != nullptr && *display != '\0' ? display : "not set");
-  }
+  if (glfwInit() == GLFW_FALSE) fail("{}", no_display_message());
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

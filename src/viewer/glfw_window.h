@@ -3,7 +3,9 @@
 // current on this thread, which the frame pipeline renders on exactly as on the headless EGL context
 // of `glint render` (it needs only a current 4.5 core context; its passes draw into their own
 // framebuffers). Without a display (no
-// DISPLAY, an X server that cannot be reached) construction is one glint::Error saying so.
+// DISPLAY, an X server that cannot be reached) construction is one glint::Error saying so (a script
+// ending in `quit` runs offscreen instead, viewer_app.cpp).
+#include <optional>
 #include <string>
 
 struct GLFWwindow;
@@ -16,6 +18,10 @@ public:
   ~GlfwWindow();
   GlfwWindow(const GlfwWindow&) = delete;
   GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+  // Nullopt when a window can be opened; otherwise the one-line message the constructor would fail
+  // with ("view: no display to open a window on (...): ...").
+  static std::optional<std::string> why_no_display();
 
   GLFWwindow* handle() const { return window_; }
   bool close_requested() const;

@@ -22,27 +22,9 @@ ImGuiLayer::ImGuiLayer(GlfwWindow& window) : window_(&window) {
 }
 
 ImGuiLayer::~ImGuiLayer() {
-  if (texture_ != 0) glDeleteTextures(1, &texture_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-}
-
-void ImGuiLayer::show(const ImageRgba8& image) {
-  if (image.width != texture_width_ || image.height != texture_height_) {
-    if (texture_ != 0) glDeleteTextures(1, &texture_);
-    glCreateTextures(GL_TEXTURE_2D, 1, &texture_);
-    glTextureStorage2D(texture_, 1, GL_RGBA8, image.width, image.height);
-    glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    texture_width_ = image.width;
-    texture_height_ = image.height;
-  }
-  // Rows top first, as ImGui's texture coordinates expect (v = 0 at the top).
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
-  glTextureSubImage2D(texture_, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
 }
 
 void ImGuiLayer::begin_frame() {
@@ -56,12 +38,17 @@ void ImGuiLayer::end_frame(float side_margin) {
   const float width = ImGui::GetIO().DisplaySize.x;
   const float height = ImGui::GetIO().DisplaySize.y;
   const float area = width - 2.0f * side_margin;
-  if (texture_ != 0 && area > 0.0f && height > 0.0f) {
-    const float scale = std::min(area / static_cast<float>(texture_width_), height / static_cast<float>(texture_height_));
-    const ImVec2 size(static_cast<float>(texture_width_) * scale, static_cast<float>(texture_height_) * scale);
+  if (picture_.id() != 0 && area > 0.0f && height > 0.0f) {
+    const float picture_width = static_cast<float>(picture_.width());
+    const float picture_height = static_cast<float>(picture_.height());
+    const float scale = std::min(area / picture_width, height / picture_height);
+    const ImVec2 size(picture_width * scale, picture_height * scale);
     const ImVec2 corner(side_margin + (area - size.x) * 0.5f, (height - size.y) * 0.5f);
-    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)), corner,
-                                             ImVec2(corner.x + size.x, corner.y + size.y));
+    // ImGui's v = 0 is the top of the rectangle: a GPU copy (bottom row first) is drawn with v flipped.
+    const bool flip = picture_.bottom_row_first();
+    ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(picture_.id())),
+                                             corner, ImVec2(corner.x + size.x, corner.y + size.y),
+                                             ImVec2(0.0f, flip ? 1.0f : 0.0f), ImVec2(1.0f, flip ? 0.0f : 1.0f));
   }
   ImGui::Render();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

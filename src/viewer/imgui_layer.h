@@ -1,8 +1,9 @@
 #pragma once
 // Dear ImGui on the viewer's window (Debian's libimgui: its GLFW and OpenGL 3 backends), and the
-// texture the current picture is shown from. begin_frame() starts the panels; end_frame() draws
-// the picture behind them, fitted to the window with its aspect kept, then the panels.
-#include "core/image.h"
+// texture the current picture is shown from (picture_texture.h). begin_frame() starts the panels;
+// end_frame() draws the picture behind them, fitted to the window with its aspect kept, upright,
+// then the panels.
+#include "viewer/picture_texture.h"
 
 #include <epoxy/gl.h>
 
@@ -17,8 +18,8 @@ public:
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // Replaces the picture shown behind the panels.
-  void show(const ImageRgba8& image);
+  // The picture shown behind the panels: copy or upload into it to replace it.
+  PictureTexture& picture() { return picture_; }
   void begin_frame();
   // Draws the picture fitted between `side_margin` pixels on the left and right (the panel columns).
   void end_frame(float side_margin);
@@ -28,9 +29,7 @@ public:
 
 private:
   GlfwWindow* window_;
-  GLuint texture_ = 0;
-  int texture_width_ = 0;
-  int texture_height_ = 0;
+  PictureTexture picture_;
 };
 
 }  // namespace glint::viewer

@@ -3,11 +3,13 @@
 #include "core/error.h"
 #include "core/interruption.h"
 #include "core/log.h"
+#include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
 #include "viewer/frame_images.h"
 #include "viewer/glfw_window.h"
 #include "viewer/imgui_layer.h"
 #include "viewer/path_recorder.h"
+#include "viewer/playback.h"
 #include "viewer/stats_history.h"
 #include "viewer/viewer_input.h"
 #include "viewer/viewer_panels.h"
@@ -22,7 +24,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <string>
+#include <thread>
 
 namespace glint::viewer {
 namespace {
@@ -31,21 +36,37 @@ using Clock = std::chrono::steady_clock;
 
 class ViewerApp {
 public:
-  explicit ViewerApp(const ViewerLaunch& launch)
-      : window_("glint view: " + launch.options.scene,
-                launch.options.width + 2 * static_cast<int>(kPanelWidth), std::max(launch.options.height, 720)),
-        ui_(window_),
-        session_(launch.options, pass_timing_for_renderer(window_.renderer())),
-        script_path_(launch.script) {
+  explicit ViewerApp(const ViewerLaunch& launch) : script_path_(launch.script) {
+    if (launch.offscreen && launch.script.empty()) fail("view: --offscreen needs a --script to run (there is no window)");
+    // A script runs offscreen when asked, or when there is no display to open a window on.
+    std::optional<std::string> no_display;
+    if (!launch.offscreen) no_display = GlfwWindow::why_no_display();
+    if (launch.offscreen || (no_display && !launch.script.empty())) {
+      offscreen_ = std::make_unique<HeadlessGlContext>();
+      renderer_ = offscreen_->renderer();
+    } else {
+      window_ = std::make_unique<GlfwWindow>("glint view: " + launch.options.scene,
+                                             launch.options.width + 2 * static_cast<int>(kPanelWidth),
+                                             std::max(launch.options.height, 720));
+      ui_ = std::make_unique<ImGuiLayer>(*window_);
+      renderer_ = window_->renderer();
+    }
+    session_ = std::make_unique<ViewerSession>(launch.options, pass_timing_for_renderer(renderer_));
     state_.options = launch.options;
-    if (launch.frame >= session_.frame_count())
-      fail("--frame {} is past the walkthrough's last frame, {}", launch.frame, session_.frame_count() - 1);
+    if (launch.frame >= session_->frame_count())
+      fail("--frame {} is past the walkthrough's last frame, {}", launch.frame, session_->frame_count() - 1);
     state_.frame = launch.frame;
     // On a software renderer a frame takes long: render when something changes only.
-    state_.continuous = pass_timing_for_renderer(window_.renderer()) == PassTimingMethod::gpu_queries;
-    if (!launch.script.empty()) script_ = load_viewer_script(launch.script, session_.frame_count(), launch.options);
+    state_.continuous = pass_timing_for_renderer(renderer_) == PassTimingMethod::gpu_queries;
+    if (!launch.script.empty()) script_ = load_viewer_script(launch.script, session_->frame_count(), launch.options);
+    if (offscreen_ && (script_.empty() || script_.back().verb != ScriptVerb::quit)) {
+      // Without `quit` the script leaves the window open for a person: it needs one.
+      if (no_display) fail("{}", *no_display);
+      fail("{}: --offscreen runs the script to its end, which must be `quit` (there is no window to leave open)",
+           launch.script.string());
+    }
     backends_ = available_backends();
-    log_info("view: {} on {}", launch.options.scene, window_.renderer());
+    log_info("view: {} on {}{}", launch.options.scene, renderer_, offscreen_ ? ", offscreen (no window)" : "");
   }
 
   int run() {
@@ -58,19 +79,26 @@ public:
       }
       // Nothing moves on its own: wait for input (a twentieth of a second at most, so that signals
       // and the script's waits are still seen) instead of redrawing the panels as fast as possible.
-      if (state_.continuous || state_.playing || state_.flying) window_.poll_events();
-      else window_.wait_events(0.05);
-      if (window_.close_requested()) return 0;
+      const bool idle = !state_.continuous && !state_.playing && !state_.flying;
+      if (window_) {
+        if (idle) window_->wait_events(0.05);
+        else window_->poll_events();
+        if (window_->close_requested()) return 0;
+      } else if (idle && now_waiting()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
       const Clock::time_point now = Clock::now();
       const float seconds = std::chrono::duration<float>(now - last).count();
       last = now;
       if (run_script(now)) return 0;
 
       ViewerRequests requests;
-      ui_.begin_frame();
-      input_.update(window_.handle(), seconds, window_.take_scroll(), ui_.wants_mouse(), ui_.wants_keyboard(), state_,
-                    requests);
-      draw_panels(panel_context(), state_, requests);
+      if (ui_) {
+        ui_->begin_frame();
+        input_.update(window_->handle(), seconds, window_->take_scroll(), ui_->wants_mouse(), ui_->wants_keyboard(),
+                      state_, requests);
+        draw_panels(panel_context(), state_, requests);
+      }
       try {
         handle(requests);
         advance(seconds);
@@ -81,9 +109,11 @@ public:
         log_warning("view: {}", error.what());
         adopt_session_options();  // a loop that failed to build went back to the settings before
       }
-      show_picture();
-      ui_.end_frame(kPanelWidth);
-      window_.swap_buffers();
+      if (ui_) {
+        show_picture();
+        ui_->end_frame(kPanelWidth);
+        window_->swap_buffers();
+      }
     }
   }
 
@@ -102,6 +132,9 @@ private:
     }
     return false;
   }
+
+  // Whether the script is in a `wait` (offscreen, an idle viewer then sleeps instead of spinning).
+  bool now_waiting() const { return Clock::now() < wait_until_; }
 
   void execute(const ScriptCommand& command) {
     const std::vector<std::string>& a = command.arguments;
@@ -125,8 +158,7 @@ private:
         camera.position = script_point("camera", a[0]);
         camera.target = script_point("target", a[1]);
         state_.fly = FlyCamera(camera);
-        state_.flying = true;
-        state_.playing = false;
+        state_.flying = true;  // playing goes on: the flown camera sees the frames as they play
         return;
       }
       case ScriptVerb::path: state_.flying = false; return;
@@ -150,8 +182,8 @@ private:
 
   PanelContext panel_context() const {
     PanelContext context;
-    context.frame_count = session_.frame_count();
-    context.renderer = window_.renderer();
+    context.frame_count = session_->frame_count();
+    context.renderer = renderer_;
     context.backends = backends_;
     context.recording = recorder_.recording();
     context.recorded_points = recorder_.size();
@@ -162,7 +194,7 @@ private:
 
   void handle(const ViewerRequests& requests) {
     if (requests.start_flying && !state_.flying) {
-      state_.fly = FlyCamera(session_.walkthrough_state(current_frame()).camera);
+      state_.fly = FlyCamera(session_->walkthrough_state(current_frame()).camera);
       state_.flying = true;
     }
     if (requests.back_to_path) state_.flying = false;
@@ -172,8 +204,8 @@ private:
   }
 
   void reload() {
-    session_.reload_scene();
-    state_.frame = std::min(state_.frame, static_cast<double>(session_.frame_count() - 1));
+    session_->reload_scene();
+    state_.frame = std::min(state_.frame, static_cast<double>(session_->frame_count() - 1));
     rendered_.reset();
     state_.status = "reloaded " + state_.options.scene;
   }
@@ -190,20 +222,16 @@ private:
     state_.status = fmt::format("wrote {} camera points to {}", recorder_.size(), out.string());
   }
 
-  // Playback: the walkthrough's frame rate times the speed; flying pauses it (each new frame of a
-  // flown view rebuilds the loop, see viewer_session.h).
   void advance(float seconds) {
-    if (!state_.playing || state_.flying) return;
-    const double fps = static_cast<double>(session_.rest_scene().walkthrough.frames_per_second);
-    state_.frame += static_cast<double>(seconds) * fps * static_cast<double>(state_.speed);
-    state_.frame = std::fmod(state_.frame, static_cast<double>(session_.frame_count()));
+    advance_playback(state_, seconds, static_cast<float>(session_->rest_scene().walkthrough.frames_per_second),
+                     session_->frame_count());
   }
 
-  int current_frame() const { return std::clamp(static_cast<int>(state_.frame), 0, session_.frame_count() - 1); }
+  int current_frame() const { return std::clamp(static_cast<int>(state_.frame), 0, session_->frame_count() - 1); }
 
   ViewPoint view_point() const {
     ViewPoint view{current_frame(), std::nullopt};
-    if (state_.flying) view.camera = state_.fly.state(session_.rest_scene().walkthrough.camera.fov_y_degrees);
+    if (state_.flying) view.camera = state_.fly.state(session_->rest_scene().walkthrough.camera.fov_y_degrees);
     return view;
   }
 
@@ -218,21 +246,21 @@ private:
   // strict (the script) throws, otherwise the panels go back to the settings in use.
   void apply_state(bool strict) {
     try {
-      session_.set_options(scaled_options());
+      session_->set_options(scaled_options());
     } catch (const Error&) {
       if (!strict) adopt_session_options();
       throw;
     }
-    if (state_.light_stays != session_.fixed_light().has_value())
-      session_.set_fixed_light(state_.light_stays
-                                   ? std::optional<vec3>(session_.walkthrough_state(current_frame()).light_position)
+    if (state_.light_stays != session_->fixed_light().has_value())
+      session_->set_fixed_light(state_.light_stays
+                                   ? std::optional<vec3>(session_->walkthrough_state(current_frame()).light_position)
                                    : std::nullopt);
   }
 
   // The panels show the settings the session renders with (its size is the scaled one).
   void adopt_session_options() {
     const int width = state_.options.width, height = state_.options.height;
-    state_.options = session_.options();
+    state_.options = session_->options();
     state_.options.width = width;
     state_.options.height = height;
   }
@@ -241,10 +269,10 @@ private:
     apply_state(strict);
     const ViewPoint view = view_point();
     const bool changed = !rendered_ || !(rendered_->view == view) ||
-                         !same_viewer_settings(rendered_->options, session_.options()) ||
-                         rendered_->light != session_.fixed_light();
+                         !same_viewer_settings(rendered_->options, session_->options()) ||
+                         rendered_->light != session_->fixed_light();
     if (changed || (state_.continuous && !strict)) {
-      FrameMeasurement measured = session_.render(view);
+      FrameMeasurement measured = session_->render(view);
       const Clock::time_point now = Clock::now();
       stats_.add(measured, last_render_ ? std::chrono::duration<double, std::milli>(now - *last_render_).count() : 0.0);
       last_render_ = now;
@@ -252,36 +280,60 @@ private:
       // builds a loop of its own, too slow to make every frame.
       std::optional<DifferenceFromRt> difference;
       if (!changed) difference = std::move(images_.difference);
-      images_ = FrameImages{std::move(*measured.final_image), {}, std::move(difference)};
-      rendered_ = Rendered{view, session_.options(), session_.fixed_light()};
+      images_ = FrameImages{std::nullopt, {}, std::move(difference)};
+      rendered_ = Rendered{view, session_->options(), session_->fixed_light()};
+      ++renders_;
       views_read_ = false;
       if (state_.flying) recorder_.sample(*view.camera);
     }
     // The pictures the chosen view needs, read from the pipeline that still holds the frame.
     if (state_.view != "final" && state_.view != "difference") read_views();
     if (state_.view == "difference" && !images_.difference)
-      images_.difference = difference_from_reference(images_.final_image, session_.render_reference(view));
+      images_.difference = difference_from_reference(final_image(), session_->render_reference(view));
+  }
+
+  // The final image on the host, read from the pipeline once per render (screenshots, the difference).
+  const ImageRgba8& final_image() {
+    if (!images_.final_image) images_.final_image = session_->final_image();
+    return *images_.final_image;
   }
 
   void read_views() {
     if (views_read_) return;
-    images_.views = session_.debug_views();
+    images_.views = session_->debug_views();
     views_read_ = true;
   }
 
   void screenshot(const std::string& path) {
     if (!rendered_) render_if_needed(true);
+    (void)final_image();
     read_views();
     const std::vector<std::filesystem::path> written = write_screenshot(path, images_);
     state_.status = fmt::format("wrote {} and {} view{}", path, written.size() - 1, written.size() == 2 ? "" : "s");
     log_info("view: {}", state_.status);
   }
 
+  // The final image goes from the pipeline's texture to the picture's on the GPU; other views are
+  // host images (debug views, the heat map) and are uploaded. Either only when it changed.
   void show_picture() {
     if (!rendered_) return;
-    const ImageRgba8* picture = images_.find(state_.view);
-    ui_.show(picture != nullptr ? *picture : images_.final_image);
+    const ImageRgba8* picture = state_.view == "final" ? nullptr : images_.find(state_.view);
+    const Shown shown{renders_, picture != nullptr ? state_.view : "final"};
+    if (shown_ == shown) return;
+    if (picture != nullptr) {
+      ui_->picture().upload(*picture);
+    } else {
+      if (session_->final_texture() == 0) return;  // the loop failed to rebuild: keep the last picture
+      ui_->picture().copy_from(session_->final_texture(), session_->rendered_width(), session_->rendered_height());
+    }
+    shown_ = shown;
   }
+
+  struct Shown {
+    std::uint64_t render = 0;
+    std::string view;
+    bool operator==(const Shown&) const = default;
+  };
 
   struct Rendered {
     ViewPoint view;
@@ -289,9 +341,13 @@ private:
     std::optional<vec3> light;
   };
 
-  GlfwWindow window_;
-  ImGuiLayer ui_;
-  ViewerSession session_;
+  // One of the two GL contexts: the window's, or (a script offscreen) a headless EGL one. Declared
+  // before the session so that its GL objects go first.
+  std::unique_ptr<HeadlessGlContext> offscreen_;
+  std::unique_ptr<GlfwWindow> window_;
+  std::unique_ptr<ImGuiLayer> ui_;
+  std::string renderer_;  // GL_RENDERER of the context in use
+  std::unique_ptr<ViewerSession> session_;
   std::filesystem::path script_path_;
   std::vector<ScriptCommand> script_;
   std::size_t next_command_ = 0;
@@ -304,6 +360,8 @@ private:
   FrameImages images_;
   bool views_read_ = false;
   std::optional<Rendered> rendered_;
+  std::uint64_t renders_ = 0;   // renders so far: which one the picture shows
+  std::optional<Shown> shown_;  // what the picture texture holds
   std::optional<Clock::time_point> last_render_;
 };
 

@@ -14,11 +14,15 @@ struct ViewerLaunch {
   RenderOptions options;         // scene and starting settings (width and height: the render size)
   std::filesystem::path script;  // empty: interactive only
   int frame = 0;                 // the walkthrough frame shown first
+  // No window: the script runs on a headless EGL context (gl/egl_context.h, as `glint render`), to
+  // its `quit`. Also chosen when a script is given and there is no display.
+  bool offscreen = false;
 };
 
 // Returns the exit status: 0 after `quit` or the window closed, 128 + the signal after SIGINT or
-// SIGTERM (the screenshot being written is finished first). glint::Error for no display, a bad
-// script line ("FILE:LINE: ...") or a scene that does not load.
+// SIGTERM (the screenshot being written is finished first). glint::Error for no display (where a
+// window is needed: no script, or one without `quit`), a bad script line ("FILE:LINE: ...") or a
+// scene that does not load.
 int run_viewer(const ViewerLaunch& launch);
 
 }  // namespace glint::viewer

@@ -3,7 +3,6 @@
 #include "backends/registry.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
-#include "gl/gpu_memory.h"
 #include "scene/load_scene.h"
 #include "viewer/viewer_settings.h"
 
@@ -23,8 +22,7 @@ Scene load(const RenderOptions& options) {
 void check_runnable(const RenderOptions& options) {
   const render::FramePipelineSettings settings = render_pipeline_settings(options);
   if (render::uses_ray_tracer(settings)) {
-    backends::check_backend_built(options.backend);
-    if (backends::is_gpu_backend(options.backend)) require_cuda_gpu(("backend " + options.backend).c_str());
+    backends::check_backend_runnable(options.backend);
   }
   if (options.deform == "on" && deforms_on_gpu(options)) require_cuda_gpu("deformation on the GPU");
 }
@@ -75,13 +73,13 @@ Scene ViewerSession::working_scene() const {
 
 FrameLoopOptions ViewerSession::loop_options(const RenderOptions& options) const {
   FrameLoopOptions loop_options{options.width, options.height, options.deform == "on", deforms_on_gpu(options)};
-  loop_options.capture_final = true;
-  loop_options.serialized = true;  // the debug views are read from the pipeline after each frame
+  // No readback of every frame: the viewer shows the pipeline's texture and reads the final image
+  // (and the debug views) from the pipeline only when asked, which serialized keeps possible.
+  loop_options.serialized = true;
   return loop_options;
 }
 
 void ViewerSession::rebuild() {
-  free_timer_.reset();
   loop_.reset();  // its GL objects go before the new ones are made
   scene_ = working_scene();
   try {
@@ -93,11 +91,7 @@ void ViewerSession::rebuild() {
     throw;
   }
   built_options_ = options_;
-  free_timer_ = std::make_unique<GpuTimer>(pass_timing_);
-  free_frames_ = 0;
   stale_ = false;
-  diverged_ = false;
-  posed_frame_.reset();
   last_rebuilt_ = true;
 }
 
@@ -105,30 +99,17 @@ FrameMeasurement ViewerSession::render(const ViewPoint& view) {
   if (view.frame < 0 || view.frame >= frame_count())
     fail("frame {} is outside the walkthrough's frames 0 to {}", view.frame, frame_count() - 1);
   last_rebuilt_ = false;
-  if (stale_ || (diverged_ && (!view.camera || posed_frame_ != view.frame))) rebuild();
-  if (!view.camera || posed_frame_ != view.frame) {
-    FrameMeasurement measured = loop_->run(view.frame);
-    posed_frame_ = view.frame;
-    if (!view.camera) return measured;
-  }
-  // Free flight: the scene stays posed at the frame, the pipeline renders it from the free camera.
-  diverged_ = true;
-  FrameState state = animation_->at(view.frame);
-  state.camera = *view.camera;
-  render::FramePipeline& pipeline = loop_->pipeline();
-  free_timer_->begin_frame();
-  pipeline.render(state, free_timer_.get());
-  free_timer_->end_frame();
-  FrameMeasurement measured;
-  measured.frame = view.frame;
-  measured.times = *free_timer_->take_frame(free_frames_++, /*wait=*/true);
-  measured.latency_ms = measured.frame_ms = measured.times.latency_ms;
-  if (pipeline.ray_tracer() != nullptr) measured.accel_update_ms = 0.0;  // the scene did not move
-  measured.ssr_counts = pipeline.read_counts();
-  measured.ray_stats = pipeline.ray_trace_stats();
-  measured.gpu_memory_used_bytes = gpu_memory_used_bytes();
-  measured.final_image = pipeline.read_final();
-  return measured;
+  if (stale_) rebuild();
+  return loop_->run(view.frame, view.camera);
+}
+
+GLuint ViewerSession::final_texture() const { return loop_ ? loop_->pipeline().final_texture() : 0; }
+int ViewerSession::rendered_width() const { return loop_ ? loop_->pipeline().width() : 0; }
+int ViewerSession::rendered_height() const { return loop_ ? loop_->pipeline().height() : 0; }
+
+ImageRgba8 ViewerSession::final_image() const {
+  if (!loop_) fail("view: nothing rendered yet");
+  return loop_->pipeline().read_final();
 }
 
 std::vector<render::DebugView> ViewerSession::debug_views() {
@@ -142,11 +123,7 @@ ImageRgba8 ViewerSession::render_reference(const ViewPoint& view) {
   check_runnable(reference);
   Scene scene = working_scene();
   FrameLoop loop(scene, render_pipeline_settings(reference), loop_options(reference), pass_timing_);
-  FrameMeasurement measured = loop.run(view.frame);
-  if (!view.camera) return std::move(*measured.final_image);
-  FrameState state = animation_->at(view.frame);
-  state.camera = *view.camera;
-  loop.pipeline().render(state);
+  (void)loop.run(view.frame, view.camera);
   return loop.pipeline().read_final();
 }
 

@@ -2,20 +2,21 @@
 // What `glint view` renders, through the same FrameLoop as `glint render`: the scene (kept at rest,
 // copied for every rebuild so the deformers start from the rest pose), the settings, and the loop
 // built from them on the current GL context (the window's). A settings change rebuilds the loop at
-// the next frame; a walkthrough frame is FrameLoop::run(frame), serialized so the debug views can be
-// read from the pipeline after it.
+// the next frame; a view is FrameLoop::run(frame, camera), serialized so the final image and the
+// debug views can be read from the pipeline after it.
 //
-// Free flight: FrameLoop renders only the walkthrough's cameras, so a flown view poses the scene
-// through the loop at its frame (deformation and ray tracer update) and then renders the pipeline
-// once more from the free camera (FramePipeline::render with the session's own timer). After that
-// the loop's frame numbering no longer matches its pipeline's, so the loop is rebuilt when the view
-// returns to the walkthrough or the frame changes.
+// Free flight is the same loop with the flown camera (FrameLoop::submit's camera): the scene is
+// posed, the structures updated and the light placed at the view's frame, so the walkthrough's
+// clock (playback, deformation, the light) keeps running while the camera is the flown one.
 #include "app/frame_loop.h"
 #include "app/render_command.h"
 #include "core/image.h"
 #include "gl/gpu_timer.h"
+#include "render/frame_pipeline.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
+
+#include <epoxy/gl.h>
 
 #include <memory>
 #include <optional>
@@ -56,9 +57,17 @@ public:
   // The walkthrough's state at `frame` (with the fixed light when there is one).
   FrameState walkthrough_state(int frame) const { return animation_->at(frame); }
 
-  // Renders `view` and returns what it measured, final image included. glint::Error for a frame
-  // outside the walkthrough.
+  // Renders `view` and returns what it measured (no final image: the loop leaves it in the pipeline,
+  // final_texture() shows it and final_image() reads it). glint::Error for a frame outside the
+  // walkthrough.
   FrameMeasurement render(const ViewPoint& view);
+  // The last render's final image on the GPU (kFinalFormat, bottom row first; FramePipeline::
+  // final_texture) and its size: valid until the next render or rebuild. 0 before the first render.
+  GLuint final_texture() const;
+  int rendered_width() const;
+  int rendered_height() const;
+  // The last render's final image read to the host (screenshots, the difference). Waits for the GPU.
+  ImageRgba8 final_image() const;
   // The debug views of the last render (see FramePipeline::read_debug_views).
   std::vector<render::DebugView> debug_views();
   // The same view with rt reflections (the reference), rendered by a loop of its own that lives only
@@ -80,11 +89,7 @@ private:
   std::optional<vec3> fixed_light_;
   std::unique_ptr<WalkthroughAnimation> animation_;
   std::unique_ptr<FrameLoop> loop_;
-  std::unique_ptr<GpuTimer> free_timer_;  // free-flight renders
-  std::uint64_t free_frames_ = 0;
-  bool stale_ = true;     // settings, light or scene changed since the loop was built
-  bool diverged_ = false;  // the pipeline rendered outside the loop (free flight)
-  std::optional<int> posed_frame_;
+  bool stale_ = true;  // settings, light or scene changed since the loop was built
   bool last_rebuilt_ = false;
 };
 

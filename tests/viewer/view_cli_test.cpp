@@ -2,7 +2,8 @@
 // llvmpipe): a scripted session switching modes and backends writes its screenshots, a screenshot
 // equals `glint render` of the same frame and settings, a bad script line is one error naming it
 // and writes nothing, SIGINT and closing the window end it cleanly, and without a display it says so
-// in one line. Small frames (320 x 180) and few of them keep this quick on two cores.
+// in one line (a script ending in quit runs offscreen instead). Small frames (320 x 180) and few of
+// them keep this quick on two cores.
 #include "app/cli_runner.h"
 #include "core/image.h"
 #include "metrics/rmse_psnr.h"
@@ -123,6 +124,28 @@ TEST(ViewCli, WithoutADisplayItSaysSoInOneLine) {
   EXPECT_EQ(line_count(result.err), 1) << result.err;
   EXPECT_NE(result.err.find("no display"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("xvfb-run"), std::string::npos) << result.err;
+}
+
+// Without a display a script that ends with `quit` runs offscreen (a headless EGL context, as
+// `glint render`; how scripted sessions run on a headless GPU machine): its screenshot is `glint
+// render`'s frame. A script without `quit` would leave a window open: it needs one and says so.
+TEST(ViewCli, WithoutADisplayAScriptEndingInQuitRunsOffscreen) {
+  const ScopedEnv no_display("DISPLAY", std::nullopt);
+  const ScopedEnv no_wayland("WAYLAND_DISPLAY", std::nullopt);
+  const TempFolder folder;
+  const fs::path shot = folder.path() / "offscreen.png";
+  const CliResult viewed =
+      view_script(folder, "frame 2100\nscreenshot " + shot.string() + "\nquit\n", " --set backend=embree");
+  ASSERT_EQ(viewed.exit_code, 0) << viewed.err;
+  const CliResult rendered = run_glint("render atrium-simple" + kSize + " --backend embree --frames 2100 --out " +
+                                       quoted(folder.path() / "render"));
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+  EXPECT_GE(metrics::rmse_psnr(read_png(shot), read_png(folder.path() / "render" / "frame_02100.png")).psnr, 50.0);
+
+  const CliResult left_open = view_script(folder, "frame 2100\n");
+  EXPECT_EQ(left_open.exit_code, 1);
+  EXPECT_EQ(line_count(left_open.err), 1) << left_open.err;
+  EXPECT_NE(left_open.err.find("no display"), std::string::npos) << left_open.err;
 }
 
 // Starts `glint view` with `script` in a child, waits until `ready()` (a minute at most), does
