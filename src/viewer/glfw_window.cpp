@@ -43,11 +43,17 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   // EGL first, as `glint render` uses (the gl backend asks EGL for the current context); the display
-  // system's native API (GLX) where EGL cannot make a window context.
-  glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
-  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  // system's native API (GLX) where EGL cannot make a window context, or where GLINT_WINDOW_GL=glx
+  // asks for it (VirtualGL moves GLX contexts to the GPU, not EGL/X11 ones; docs/gl.md).
+  const char* asked = std::getenv("GLINT_WINDOW_GL");
+  const bool glx_only = asked != nullptr && std::string(asked) == "glx";
+  std::string egl_reason = "skipped (GLINT_WINDOW_GL=glx)";
+  if (!glx_only) {
+    glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
+    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (window_ == nullptr) egl_reason = last_glfw_error();
+  }
   if (window_ == nullptr) {
-    const std::string egl_reason = last_glfw_error();
     glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_NATIVE_CONTEXT_API);
     window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (window_ == nullptr) {
