@@ -7,7 +7,8 @@
 //      mapped host memory, after the CPU waited for the list; a GPU backend (cuda, optix) in GPU
 //      memory shared with CUDA, with no host wait and no copy (rt::DeviceTracing,
 //      cuda::GlBufferInterop); the gl backend in GPU memory with its compute shaders, a GL pass
-//      timed as "trace" (rt::GlTracing);
+//      timed as "trace" (rt::GlTracing). Which of the three is chosen once, at construction
+//      (render/reflection_trace_step.h);
 //   3. HitShadingPass (GPU): the hits are shaded like the raster path into the reflection image.
 // The tracer is not owned: FramePipeline builds one (build_ray_tracer) for reflections and shadow
 // rays alike and updates it once per frame for deforming meshes.
@@ -15,19 +16,18 @@
 //   auto tracer = build_ray_tracer(scene, settings);               // shared with shadow rays
 //   RayTracedReflections traced(scene, 1280, 720, settings, *tracer);
 //   traced.run(raster, ssr.failure_mask(), ssr.reflection(), &timer);
-#include "cuda/gl_buffer_interop.h"
 #include "gl/gpu_timer.h"
 #include "render/hit_shading_pass.h"
 #include "render/hit_shadow_rays.h"
 #include "render/raster_pipeline.h"
 #include "render/ray_hit_buffers.h"
 #include "render/ray_list_pass.h"
+#include "render/reflection_trace_step.h"
 #include "rt/ray_tracer.h"
 #include "scene/scene.h"
 
 #include <epoxy/gl.h>
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -51,14 +51,6 @@ struct RayTracingSettings {
   void validate() const;  // glint::Error naming the first bad field (an unknown backend: at construction)
 };
 
-struct RayTraceFrameStats {
-  std::uint32_t rays_traced = 0;        // rays in the list, all traced
-  std::uint32_t reflective_pixels = 0;  // reflective pixels the ray-list pass saw
-  // CPU backends: the backend's trace_closest, wall clock; cuda and optix: the trace kernel's GPU
-  // time (CUDA events); gl: the frame timer's "trace" pass (filled in by FrameLoop; 0 here).
-  double trace_ms = 0.0;
-};
-
 // The settings' backend (with traced_instances: only those), its structures built over `scene`
 // (timed: stats().build_ms). glint::Error for bad settings or an unknown backend.
 std::unique_ptr<rt::RayTracer> build_ray_tracer(const Scene& scene, const RayTracingSettings& settings);
@@ -71,6 +63,9 @@ public:
   // tracer (HitShadowRays), else the cube map's.
   RayTracedReflections(const Scene& scene, int width, int height, const RayTracingSettings& settings,
                        rt::RayTracer& tracer, bool shadow_rays = false);
+  // The passes and the trace step hold references to the buffers: not copyable or movable.
+  RayTracedReflections(const RayTracedReflections&) = delete;
+  RayTracedReflections& operator=(const RayTracedReflections&) = delete;
 
   // Lists, traces and shades the reflections of this frame into `reflection` (kReflectionFormat),
   // written only at listed pixels. `failure_mask` 0 = trace every reflective pixel. The GL steps
@@ -89,8 +84,6 @@ public:
 
   const rt::RayTracer& tracer() const { return *tracer_; }
   rt::RayTracer& tracer() { return *tracer_; }
-  // The GPU backend's device side, or null for a CPU backend.
-  rt::DeviceTracing* device_tracing() { return device_; }
   const RayTracingSettings& settings() const { return settings_; }
   RayListPass& ray_list() { return ray_list_; }  // --reflections auto sets its tiles and budget
   // The rays and hits of the last run (tests), and the hits' shadow rays (null without shadow rays).
@@ -98,25 +91,18 @@ public:
   const HitShadowRays* hit_shadow_rays() const { return hit_shadows_ ? &*hit_shadows_ : nullptr; }
 
 private:
-  RayTracingSettings settings_;
-  // Traces this frame's list (with a GPU backend that can, the hits' shadow rays towards
-  // `light_position` too); CPU backends: records the stats, GPU backends: the trace's ticket.
-  void trace(RayListCounts host_counts, std::size_t slot, vec3 light_position);
   std::size_t slot_of(std::uint64_t run) const;
 
+  RayTracingSettings settings_;
   rt::RayTracer* tracer_;
-  rt::DeviceTracing* device_;  // tracer_'s device side, or null
-  rt::GlTracing* gl_;          // tracer_'s GL side (the gl backend), or null
   RayHitBuffers buffers_;
-  std::optional<cuda::GlBufferInterop> interop_;  // rays, hits, counters; GPU backends only
-  // Per readback slot (run % kFramesInFlight): CPU backends' statistics; a GPU backend's trace
-  // ticket, whose time is read with the slot's counters (in buffers_' slot) once the GPU is done.
-  std::array<RayTraceFrameStats, kFramesInFlight> slot_stats_{};
-  std::array<rt::GpuTicket, kFramesInFlight> trace_tickets_{};
   std::uint64_t runs_ = 0;
   RayListPass ray_list_;
   std::optional<HitShadowRays> hit_shadows_;  // with shadow rays
   HitShadingPass hit_shading_;
+  // The backend's trace between the ray list and hit shading, per readback slot (run %
+  // kFramesInFlight); made last, over buffers_ and hit_shadows_.
+  std::unique_ptr<ReflectionTraceStep> trace_step_;
 };
 
 }  // namespace glint::render
