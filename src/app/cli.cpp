@@ -6,7 +6,6 @@
 #include "app/devices_command.h"
 #include "app/info_command.h"
 #include "app/render_command.h"
-#include "app/view_command.h"
 #include "core/error.h"
 #include "core/interruption.h"
 #include "core/log.h"
@@ -39,7 +38,7 @@ std::string command_line_text(int argc, char** argv) {
 
 }  // namespace
 
-int run_cli(int argc, char** argv) {
+int run_cli(int argc, char** argv, const std::vector<CliCommand>& more) {
   CLI::App app{"glint: hybrid screen-space + ray-traced reflections for walkthroughs of static and deformable scenes",
                "glint"};
   app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION);
@@ -59,8 +58,7 @@ int run_cli(int argc, char** argv) {
   add_accel_bench_command(app, accel_bench);
   BenchOptions bench;
   add_bench_command(app, bench);
-  ViewOptions view;
-  add_view_command(app, view);
+  for (const CliCommand& command : more) command.add(app);
 
   try {
     app.parse(argc, argv);
@@ -84,12 +82,13 @@ int run_cli(int argc, char** argv) {
       return run_render_command(render);
     }
     if (app.got_subcommand("compare")) return run_compare_command(compare);
-    if (app.got_subcommand("view")) return run_view_command(view);
     if (app.got_subcommand("accel-bench")) return run_accel_bench_command(accel_bench);
     if (app.got_subcommand("bench")) {
       bench.command_line = command_line_text(argc, argv);
       return run_bench_command(bench);
     }
+    for (const CliCommand& command : more)
+      if (app.got_subcommand(command.name)) return command.run();
   } catch (const Interrupted& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return interrupted_exit_code();

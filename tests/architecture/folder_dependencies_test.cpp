@@ -1,8 +1,8 @@
 // docs/architecture.md's layering rule, "dependencies pointing down only", checked on the code: the
-// #include "folder/..." lines of every file under src/ make a graph of src/'s folders, which must
-// have no cycle. One exception, declared here and in docs/architecture.md: app/ and viewer/ are one
-// layer, the program (`glint view` is built on render's frame loop and options in app/, and app/'s
-// command table names it), so they count as one node.
+// #include "folder/..." lines of every file under src/'s folders make a graph of those folders,
+// which must have no cycle. viewer/ sits above app/ (`glint view` is built on app/'s frame loop and
+// render options; src/main.cpp, above every folder, hands the view command to app's run_cli), so
+// app/ includes nothing of viewer/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,9 +19,6 @@ namespace glint {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Folders that share one node of the graph (see the top of this file).
-std::string node_of(const std::string& folder) { return folder == "viewer" ? "app" : folder; }
 
 // Edge "from -> to" with one include line that makes it ("src/rt/x.cpp:4").
 using Graph = std::map<std::string, std::map<std::string, std::string>>;
@@ -44,7 +41,7 @@ Graph include_graph(const fs::path& src) {
     for (int number = 1; std::getline(file, line); ++number) {
       std::smatch match;
       if (!std::regex_search(line, match, include) || !folders.contains(match[1].str())) continue;
-      const std::string from = node_of(folder), to = node_of(match[1].str());
+      const std::string from = folder, to = match[1].str();
       if (from != to)
         graph[from].emplace(to, fs::relative(entry.path(), src.parent_path()).string() + ":" + std::to_string(number));
     }
@@ -96,6 +93,13 @@ TEST(FolderDependencies, SrcFoldersIncludeEachOtherWithoutACycle) {
   ASSERT_TRUE(graph.contains("rt") && graph.contains("app")) << "src/ was not read";
   const std::optional<std::string> cycle = find_cycle(graph);
   EXPECT_EQ(cycle, std::nullopt) << "folder-level include cycle: " << *cycle;
+}
+
+TEST(FolderDependencies, ViewerSitsAboveApp) {
+  const Graph graph = include_graph(fs::path(GLINT_SOURCE_DIR) / "src");
+  ASSERT_TRUE(graph.contains("viewer"));
+  EXPECT_TRUE(graph.at("viewer").contains("app")) << "the viewer runs app/'s frame loop";
+  if (graph.at("app").contains("viewer")) ADD_FAILURE() << "app/ includes viewer/: " << graph.at("app").at("viewer");
 }
 
 TEST(FolderDependencies, RtKnowsNoBackendOutsideIt) {

@@ -1,11 +1,13 @@
-#include "app/view_command.h"
+#include "viewer/view_command.h"
 
 #include "app/info_command.h"
 #include "core/error.h"
 #include "viewer/viewer_app.h"
 #include "viewer/viewer_settings.h"
 
-namespace glint {
+#include <memory>
+
+namespace glint::viewer {
 
 void add_view_command(CLI::App& app, ViewOptions& options) {
   CLI::App* command = app.add_subcommand(
@@ -35,13 +37,13 @@ void add_view_command(CLI::App& app, ViewOptions& options) {
 }
 
 int run_view_command(const ViewOptions& options) {
-  viewer::ViewerLaunch launch;
+  ViewerLaunch launch;
   launch.options = options.render;
   for (const std::string& setting : options.settings) {
     const std::size_t equals = setting.find('=');
     if (equals == std::string::npos) fail("--set {}: expected NAME=VALUE", setting);
     try {
-      viewer::set_viewer_setting(launch.options, setting.substr(0, equals), setting.substr(equals + 1));
+      set_viewer_setting(launch.options, setting.substr(0, equals), setting.substr(equals + 1));
     } catch (const Error& error) {
       fail("--set {}", error.what());
     }
@@ -50,7 +52,13 @@ int run_view_command(const ViewOptions& options) {
   launch.script = options.script;
   launch.frame = options.frame;
   launch.offscreen = options.offscreen;
-  return viewer::run_viewer(launch);
+  return run_viewer(launch);
 }
 
-}  // namespace glint
+CliCommand view_cli_command() {
+  const auto options = std::make_shared<ViewOptions>();
+  return {"view", [options](CLI::App& app) { add_view_command(app, *options); },
+          [options] { return run_view_command(*options); }};
+}
+
+}  // namespace glint::viewer

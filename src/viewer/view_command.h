@@ -1,7 +1,9 @@
 #pragma once
 // `glint view [scene]`: the interactive viewer (src/viewer/, docs/viewer.md): a window with panels
 // running the frame loop of `glint render`, live settings, debug views, stats, screenshots, and
-// `--script FILE` to drive it without input.
+// `--script FILE` to drive it without input. viewer/ sits above app/: the program's main
+// (src/main.cpp) hands view_cli_command() to app's run_cli, which knows no viewer.
+#include "app/cli.h"
 #include "app/render_command.h"
 
 #include <CLI/CLI.hpp>
@@ -9,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace glint {
+namespace glint::viewer {
 
 struct ViewOptions {
   ViewOptions() {
@@ -25,5 +27,7 @@ struct ViewOptions {
 
 void add_view_command(CLI::App& app, ViewOptions& options);
 int run_view_command(const ViewOptions& options);
+// The `view` subcommand for run_cli: its options live in the returned command.
+CliCommand view_cli_command();
 
-}  // namespace glint
+}  // namespace glint::viewer
