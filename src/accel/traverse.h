@@ -65,6 +65,21 @@ GLINT_HOST_DEVICE bool traverse_bvh(const BvhView& bvh, const vec3& origin, cons
   }
 }
 
+// The walk of one single-mesh structure under the name the queries below call: one overload per
+// structure view (kdtree/kdtree_traverse.h adds the kd-tree's), so intersect_closest/any and
+// trace_closest/any are written once for every structure and stay inlined into each walk.
+// kIsStructureView marks the views that have one (the queries take nothing else).
+template <typename View>
+inline constexpr bool kIsStructureView = false;
+template <>
+inline constexpr bool kIsStructureView<BvhView> = true;
+
+template <bool kAnyHit, typename IntersectPrim>
+GLINT_HOST_DEVICE inline bool walk_structure(const BvhView& bvh, const vec3& origin, const vec3& direction,
+                                             float t_min, float& t_max, IntersectPrim&& intersect_prim) {
+  return traverse_bvh<kAnyHit>(bvh, origin, direction, t_min, t_max, intersect_prim);
+}
+
 // The closest-hit step at one triangle, shared by every BVH traversal (CPU, GPU): when triangle
 // `prim` is hit within [t_min, t_limit] and closer than the current hit, records it in `hit` (t, prim,
 // u, v), lowers t_limit and returns true. Equal t keeps the first one found (ties on shared edges may
@@ -82,35 +97,47 @@ GLINT_HOST_DEVICE inline bool record_closer_hit(const WatertightRay& ray, const 
   return true;
 }
 
-// Closest hit against one triangle mesh. Updates `hit` (t, prim, u, v; instance untouched) only
-// when something closer than ray_t_max is found; returns whether it was.
-GLINT_HOST_DEVICE inline bool intersect_closest(const BvhView& bvh, const TriangleMesh& mesh, const vec3& origin,
-                                                const vec3& direction, float t_min, float& t_max, Hit& hit) {
+// Closest hit against one triangle mesh through `structure` (a BvhView or a KdTreeView: anything
+// walk_structure takes). Updates `hit` (t, prim, u, v; instance untouched) only when something
+// closer than t_max is found, lowers t_max to it and returns whether it was. What a two-level walk
+// calls per instance, in object space.
+template <typename StructureView>
+  requires kIsStructureView<StructureView>
+GLINT_HOST_DEVICE inline bool intersect_closest(const StructureView& structure, const TriangleMesh& mesh,
+                                                const vec3& origin, const vec3& direction, float t_min, float& t_max,
+                                                Hit& hit) {
   const WatertightRay ray = make_watertight_ray(origin, direction);
-  return traverse_bvh<false>(bvh, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
+  return walk_structure<false>(structure, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
     return record_closer_hit(ray, mesh, prim, t_min, t_limit, hit);
   });
 }
 
-GLINT_HOST_DEVICE inline bool intersect_any(const BvhView& bvh, const TriangleMesh& mesh, const vec3& origin,
-                                            const vec3& direction, float t_min, float t_max) {
+// Whether anything of the mesh lies within [t_min, t_max]; stops at the first hit.
+template <typename StructureView>
+  requires kIsStructureView<StructureView>
+GLINT_HOST_DEVICE inline bool intersect_any(const StructureView& structure, const TriangleMesh& mesh,
+                                            const vec3& origin, const vec3& direction, float t_min, float t_max) {
   const WatertightRay ray = make_watertight_ray(origin, direction);
-  return traverse_bvh<true>(bvh, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
+  return walk_structure<true>(structure, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
     TriangleHit tri_hit;
     return intersect_triangle(ray, mesh.triangle(prim), t_min, t_limit, tri_hit);
   });
 }
 
 // Single-level conveniences: Hit.instance is 0 on a hit.
-GLINT_HOST_DEVICE inline Hit trace_closest(const BvhView& bvh, const TriangleMesh& mesh, const Ray& ray) {
+template <typename StructureView>
+  requires kIsStructureView<StructureView>
+GLINT_HOST_DEVICE inline Hit trace_closest(const StructureView& structure, const TriangleMesh& mesh, const Ray& ray) {
   Hit hit;
   float t_max = ray.t_max;
-  if (intersect_closest(bvh, mesh, ray.origin, ray.direction, ray.t_min, t_max, hit)) hit.instance = 0;
+  if (intersect_closest(structure, mesh, ray.origin, ray.direction, ray.t_min, t_max, hit)) hit.instance = 0;
   return hit;
 }
 
-GLINT_HOST_DEVICE inline bool trace_any(const BvhView& bvh, const TriangleMesh& mesh, const Ray& ray) {
-  return intersect_any(bvh, mesh, ray.origin, ray.direction, ray.t_min, ray.t_max);
+template <typename StructureView>
+  requires kIsStructureView<StructureView>
+GLINT_HOST_DEVICE inline bool trace_any(const StructureView& structure, const TriangleMesh& mesh, const Ray& ray) {
+  return intersect_any(structure, mesh, ray.origin, ray.direction, ray.t_min, ray.t_max);
 }
 
 }  // namespace glint::accel

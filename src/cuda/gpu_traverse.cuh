@@ -117,9 +117,26 @@ __device__ inline bool gpu_intersect_any(const accel::Blas& blas, const vec3& or
   });
 }
 
-// Two levels: the TLAS over instances, each instance's BLAS entered with the ray moved into its
-// object space (t is the same in both spaces). Hit.instance is the instance index.
-__device__ inline accel::Hit gpu_trace_closest(const accel::TlasView& tlas, const accel::Ray& ray, bool& overflow) {
+// A kd-tree BLAS (AccelOptions::blas = kdtree) entered by the same two-level walk: accel's
+// object-space kd-tree walk (accel/kdtree/kdtree_traverse.h: front to back, its stack bounded by the
+// builder's depth limit, so it needs no guard and never sets `overflow`).
+__device__ inline bool gpu_intersect_closest(const accel::KdBlas& blas, const vec3& origin, const vec3& direction,
+                                             float t_min, float& t_max, accel::Hit& hit, bool& /*overflow*/) {
+  return accel::intersect_closest(blas.tree, blas.mesh, origin, direction, t_min, t_max, hit);
+}
+
+__device__ inline bool gpu_intersect_any(const accel::KdBlas& blas, const vec3& origin, const vec3& direction,
+                                         float t_min, float t_max, bool& /*overflow*/) {
+  return accel::intersect_any(blas.tree, blas.mesh, origin, direction, t_min, t_max);
+}
+
+// Two levels: the TLAS over instances (guarded walk), each instance's BLAS (a BVH: accel::TlasView,
+// or a kd-tree: accel::KdTlasView) entered with the ray moved into its object space (t is the same
+// in both spaces) through the gpu_intersect_closest/any overload for its kind. Hit.instance is the
+// instance index.
+template <typename BlasT>
+__device__ inline accel::Hit gpu_trace_closest(const accel::TwoLevelView<BlasT>& tlas, const accel::Ray& ray,
+                                               bool& overflow) {
   accel::Hit hit;
   float t_max = ray.t_max;
   gpu_traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
@@ -137,7 +154,8 @@ __device__ inline accel::Hit gpu_trace_closest(const accel::TlasView& tlas, cons
 
 // The occlusion query through both levels: true at the first triangle found within [t_min, t_max] in
 // any instance (the same walk in any-hit mode, the same stack guard).
-__device__ inline bool gpu_trace_any(const accel::TlasView& tlas, const accel::Ray& ray, bool& overflow) {
+template <typename BlasT>
+__device__ inline bool gpu_trace_any(const accel::TwoLevelView<BlasT>& tlas, const accel::Ray& ray, bool& overflow) {
   float t_max = ray.t_max;
   return gpu_traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
                                 [&](uint32_t index, float&) {
@@ -145,36 +163,6 @@ __device__ inline bool gpu_trace_any(const accel::TlasView& tlas, const accel::R
     const accel::ObjectRay local = accel::to_object_space(instance, ray);
     return gpu_intersect_any(tlas.blases[instance.blas], local.origin, local.direction, ray.t_min, ray.t_max,
                              overflow);
-  });
-}
-
-// Two levels whose BLASes are kd-trees (AccelOptions::blas = kdtree): the same guarded TLAS walk; at
-// an instance leaf, accel/kdtree/kdtree_tlas.h's object-space kd-tree walk (front to back, its stack bounded
-// by the builder's depth limit, so it needs no guard) with the current closest t as its limit.
-__device__ inline accel::Hit gpu_trace_closest(const accel::KdTlasView& tlas, const accel::Ray& ray, bool& overflow) {
-  accel::Hit hit;
-  float t_max = ray.t_max;
-  gpu_traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
-                          [&](uint32_t index, float& t_limit) {
-    const accel::Instance& instance = tlas.instances[index];
-    const accel::ObjectRay local = accel::to_object_space(instance, ray);
-    const accel::KdBlas& blas = tlas.blases[instance.blas];
-    if (!accel::intersect_closest(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, t_limit, hit))
-      return false;
-    hit.instance = index;
-    return true;
-  });
-  return hit;
-}
-
-__device__ inline bool gpu_trace_any(const accel::KdTlasView& tlas, const accel::Ray& ray, bool& overflow) {
-  float t_max = ray.t_max;
-  return gpu_traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, overflow,
-                                [&](uint32_t index, float&) {
-    const accel::Instance& instance = tlas.instances[index];
-    const accel::ObjectRay local = accel::to_object_space(instance, ray);
-    const accel::KdBlas& blas = tlas.blases[instance.blas];
-    return accel::intersect_any(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, ray.t_max);
   });
 }
 

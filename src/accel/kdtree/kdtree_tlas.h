@@ -1,7 +1,7 @@
 #pragma once
 // Two levels whose BLASes are kd-trees: the TLAS (accel/tlas.h, a BVH over instances built from the
-// kd-trees' root cells) is walked as in tlas_traverse.h, and at an instance leaf the ray, moved into
-// the instance's object space by the same to_object_space, walks that mesh's kd-tree with the
+// kd-trees' root cells) is walked by tlas_traverse.h's walk, and at an instance leaf the ray, moved
+// into the instance's object space by the same to_object_space, walks that mesh's kd-tree with the
 // current closest t as its limit. Single-ray walks for host and device, and the CPU batches.
 #include "accel/kdtree/kdtree.h"
 #include "accel/kdtree/kdtree_traverse.h"
@@ -30,35 +30,11 @@ KdBlas make_kd_blas(const KdTree& tree, const TriangleMesh& mesh);
 // Each BLAS's root cell (empty for an empty tree): what build_tlas/refit_tlas take.
 std::vector<Aabb> kd_blas_boxes(std::span<const KdBlas> blases);
 
-struct KdTlasView {
-  BvhView bvh;
-  const Instance* instances = nullptr;
-  const KdBlas* blases = nullptr;
-};
+// The two-level walks of tlas_traverse.h (trace_closest/trace_any(const KdTlasView&, ray)) with a
+// kd-tree BLAS, walked through its KdTreeView.
+using KdTlasView = TwoLevelView<KdBlas>;
 
-GLINT_HOST_DEVICE inline Hit trace_closest(const KdTlasView& tlas, const Ray& ray) {
-  Hit hit;
-  float t_max = ray.t_max;
-  traverse_bvh<false>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t index, float& t_limit) {
-    const Instance& instance = tlas.instances[index];
-    const ObjectRay local = to_object_space(instance, ray);
-    const KdBlas& blas = tlas.blases[instance.blas];
-    if (!intersect_closest(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, t_limit, hit)) return false;
-    hit.instance = index;
-    return true;
-  });
-  return hit;
-}
-
-GLINT_HOST_DEVICE inline bool trace_any(const KdTlasView& tlas, const Ray& ray) {
-  float t_max = ray.t_max;
-  return traverse_bvh<true>(tlas.bvh, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t index, float&) {
-    const Instance& instance = tlas.instances[index];
-    const ObjectRay local = to_object_space(instance, ray);
-    const KdBlas& blas = tlas.blases[instance.blas];
-    return intersect_any(blas.tree, blas.mesh, local.origin, local.direction, ray.t_min, ray.t_max);
-  });
-}
+GLINT_HOST_DEVICE inline const KdTreeView& blas_structure(const KdBlas& blas) { return blas.tree; }
 
 // CPU batches (TBB-parallel over rays), as tlas_trace.h's: `blases` is the array the TLAS was built
 // with. glint::Error when the spans differ in size or an instance names a BLAS past the end.

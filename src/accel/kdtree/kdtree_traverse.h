@@ -86,49 +86,15 @@ GLINT_HOST_DEVICE bool traverse_kdtree(const KdTreeView& tree, const vec3& origi
   }
 }
 
-// As accel/traverse.h's intersect_closest for a BVH (what a two-level walk calls per instance, in
-// object space): updates `hit` (t, prim, u, v; instance untouched) only when something closer than
-// t_max is found, with record_closer_hit's tie rule, and lowers t_max to it.
-GLINT_HOST_DEVICE inline bool intersect_closest(const KdTreeView& tree, const TriangleMesh& mesh, const vec3& origin,
-                                                const vec3& direction, float t_min, float& t_max, Hit& hit) {
-  const WatertightRay ray = make_watertight_ray(origin, direction);
-  return traverse_kdtree<false>(tree, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
-    return record_closer_hit(ray, mesh, prim, t_min, t_limit, hit);
-  });
-}
+// The kd-tree under the walk name of accel/traverse.h, which writes intersect_closest/any and
+// trace_closest/any once for every structure: through a KdTreeView they walk this tree.
+template <>
+inline constexpr bool kIsStructureView<KdTreeView> = true;
 
-GLINT_HOST_DEVICE inline bool intersect_any(const KdTreeView& tree, const TriangleMesh& mesh, const vec3& origin,
-                                            const vec3& direction, float t_min, float t_max) {
-  const WatertightRay ray = make_watertight_ray(origin, direction);
-  return traverse_kdtree<true>(tree, origin, direction, t_min, t_max, [&](uint32_t prim, float& t_limit) {
-    TriangleHit tri_hit;
-    return intersect_triangle(ray, mesh.triangle(prim), t_min, t_limit, tri_hit);
-  });
-}
-
-GLINT_HOST_DEVICE inline Hit trace_closest(const KdTreeView& tree, const TriangleMesh& mesh, const Ray& ray) {
-  const WatertightRay tri_ray = make_watertight_ray(ray.origin, ray.direction);
-  Hit hit;
-  float t_max = ray.t_max;
-  traverse_kdtree<false>(tree, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t prim, float& t_limit) {
-    TriangleHit tri_hit;
-    if (!intersect_triangle(tri_ray, mesh.triangle(prim), ray.t_min, t_limit, tri_hit)) return false;
-    // Equal t: keep the first one found (a triangle in two leaves is found twice at the same t).
-    if (tri_hit.t == t_limit && hit.valid()) return false;
-    t_limit = tri_hit.t;
-    hit = Hit{tri_hit.t, 0u, prim, tri_hit.u, tri_hit.v};
-    return true;
-  });
-  return hit;
-}
-
-GLINT_HOST_DEVICE inline bool trace_any(const KdTreeView& tree, const TriangleMesh& mesh, const Ray& ray) {
-  const WatertightRay tri_ray = make_watertight_ray(ray.origin, ray.direction);
-  float t_max = ray.t_max;
-  return traverse_kdtree<true>(tree, ray.origin, ray.direction, ray.t_min, t_max, [&](uint32_t prim, float& t_limit) {
-    TriangleHit tri_hit;
-    return intersect_triangle(tri_ray, mesh.triangle(prim), ray.t_min, t_limit, tri_hit);
-  });
+template <bool kAnyHit, typename IntersectPrim>
+GLINT_HOST_DEVICE inline bool walk_structure(const KdTreeView& tree, const vec3& origin, const vec3& direction,
+                                             float t_min, float& t_max, IntersectPrim&& intersect_prim) {
+  return traverse_kdtree<kAnyHit>(tree, origin, direction, t_min, t_max, intersect_prim);
 }
 
 }  // namespace glint::accel
