@@ -24,7 +24,7 @@ float camera_motion(const CameraState& previous, const CameraState& current, flo
     turn = std::acos(std::clamp(dot(normalize(a), normalize(b)), -1.0f, 1.0f));
   const float fov = std::max(1e-3f, current.fov_y_degrees * 3.14159265f / 180.0f);
   const float travel = length(current.position - previous.position);
-  const float travel_scale = std::max(1e-6f, 0.01f * scene_diagonal);
+  const float travel_scale = std::max(1e-6f, 0.1f * scene_diagonal);
   return turn / fov + travel / travel_scale;
 }
 

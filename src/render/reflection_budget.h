@@ -17,8 +17,8 @@ struct ReflectionBudget {
   float fast_motion_factor = 0.25f;
   // Camera motion per frame (camera_motion's unit) below which the camera counts as still, and from
   // which on as fast.
-  float still_motion = 0.005f;
-  float fast_motion = 0.05f;
+  float still_motion = 0.01f;
+  float fast_motion = 0.1f;
   // How much of the full budget comes back per still frame.
   float recovery_per_frame = 0.1f;
 
@@ -27,8 +27,9 @@ struct ReflectionBudget {
 };
 
 // How far the image moved between two frames, as a fraction of the screen: the view direction's
-// turn over the vertical field of view plus the camera's travel over a hundredth of the scene's
-// diagonal (a step that shifts near surfaces by a large part of the screen).
+// turn over the vertical field of view plus the camera's travel over a tenth of the scene's
+// diagonal (about the distance of what fills an interior view, whose image shifts by the travel
+// over that distance). The walkthroughs' walking pace is about 0.01 per frame.
 float camera_motion(const CameraState& previous, const CameraState& current, float scene_diagonal);
 
 // The factor motion leaves of the budget, frame after frame: it drops at once to the share the

@@ -97,10 +97,15 @@ TileThresholds choose_tile_thresholds(std::span<const TileEvidence> tiles, const
   }
   if (rays <= budget) return thresholds;
   // 2. SSR + rays tiles become SSR only, lowest f first: each saves f R rays and leaves them unreflected.
+  //    Tiles of one failure rate move together (a threshold cannot split them); a group whose move
+  //    would leave the budget partly unspent stays, and the ray list's cap cuts what is over.
   for (std::size_t i = 0; i < known.size() && rays > budget;) {
     const float f = known[i].f;
     std::size_t end = i;
-    for (; end < known.size() && known[end].f == f; ++end) rays -= f * known[end].reflective;
+    double saved = 0.0;
+    for (; end < known.size() && known[end].f == f; ++end) saved += f * known[end].reflective;
+    if (rays - saved < budget) break;
+    rays -= saved;
     thresholds.ssr_only_at_most = std::max(thresholds.ssr_only_at_most, f);
     i = end;
   }

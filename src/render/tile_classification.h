@@ -11,7 +11,8 @@
 // so rays alone win when f >= 1 - c_ssr / c_ray, and SSR alone is allowed where f is within the
 // quality target (and SSR is cheaper than a ray). choose_tile_thresholds turns that into two
 // thresholds on f; a ray budget then raises them (rt tiles become SSR + rays first, which loses
-// nothing; then SSR + rays tiles become SSR only, lowest f first). classify_tile applies them to
+// nothing; then SSR + rays tiles become SSR only, lowest f first, as long as the rays left still fill
+// the budget: the ray list's cap cuts the last few). classify_tile applies them to
 // one tile; shaders/include/tile_class_rule.glsl is its GLSL twin (kept equal by
 // tests/render/tile_classification_test.cpp).
 #include <cstdint>

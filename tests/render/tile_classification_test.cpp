@@ -78,16 +78,19 @@ TEST(TileClassification, ABudgetDemotesRaysOnlyTilesFirstThenSsrWithRaysTiles) {
   EXPECT_EQ(classify_tile(tiles[1], step1), TileClass::ssr_fallback);
   EXPECT_LE(expected_rays(tiles, step1, 0.5f), 170.0);
 
-  // 100 rays: every tile runs SSR; the lowest failure rates lose their rays first.
+  // 100 rays: every tile runs SSR; the lowest failure rates lose their rays first, and the f = 0.9
+  // tile keeps its 58 rays: without them only 64 of the 100 would be spent (the ray list's cap cuts
+  // the 22 over).
   inputs.ray_budget = 100.0;
   const TileThresholds step2 = choose_tile_thresholds(tiles, inputs);
   EXPECT_EQ(classify_tile(tiles[3], step2), TileClass::ssr_only);
   EXPECT_EQ(classify_tile(tiles[2], step2), TileClass::ssr_only);
+  EXPECT_EQ(classify_tile(tiles[1], step2), TileClass::ssr_fallback);
   EXPECT_EQ(classify_tile(tiles[0], step2), TileClass::ssr_fallback);
-  EXPECT_LE(expected_rays(tiles, step2, 0.5f), 100.0);
+  EXPECT_DOUBLE_EQ(expected_rays(tiles, step2, 0.5f), 122.0);
 }
 
-TEST(TileClassification, ExpectedRaysNeverExceedAReachableBudget) {
+TEST(TileClassification, ABudgetIsSpentAndOnlyTheLastGroupIsLeftToTheCap) {
   std::mt19937 random(21);
   std::uniform_int_distribution<std::uint32_t> failed(0, 64);
   for (int round = 0; round < 50; ++round) {
@@ -96,7 +99,32 @@ TEST(TileClassification, ExpectedRaysNeverExceedAReachableBudget) {
     ThresholdInputs inputs = with_costs(1.0, 1.0 + round % 7);
     inputs.ray_budget = 40.0 * round;
     const TileThresholds thresholds = choose_tile_thresholds(tiles, inputs);
-    EXPECT_LE(expected_rays(tiles, thresholds, 0.5f), *inputs.ray_budget) << "round " << round;
+    const TileThresholds unlimited = choose_tile_thresholds(tiles, with_costs(1.0, 1.0 + round % 7));
+    const double wanted = expected_rays(tiles, unlimited, 0.5f);
+    const double kept = expected_rays(tiles, thresholds, 0.5f);
+    if (wanted <= *inputs.ray_budget) {
+      EXPECT_DOUBLE_EQ(kept, wanted) << "round " << round << ": within the budget nothing changes";
+      continue;
+    }
+    if (kept < *inputs.ray_budget) {
+      // Under the budget only by moving rays-only tiles to SSR + rays, which loses no pixel.
+      EXPECT_EQ(thresholds.ssr_only_at_most, unlimited.ssr_only_at_most) << "round " << round;
+      continue;
+    }
+    // What is over the budget is at most one group of equal failure rate (64 pixels per tile here).
+    EXPECT_LE(kept - *inputs.ray_budget, 200.0 * 64.0) << "round " << round;
+    // Lowering the SSR-only threshold to the next rate below would leave the budget unspent:
+    // no group that could still have moved was kept.
+    TileThresholds one_more = thresholds;
+    float next = 2.0f;
+    for (const TileEvidence& t : tiles) {
+      const float f = static_cast<float>(t.failed_known) / static_cast<float>(t.known);
+      if (f > thresholds.ssr_only_at_most && f < thresholds.rt_at_least) next = std::min(next, f);
+    }
+    if (next <= 1.0f) {
+      one_more.ssr_only_at_most = next;
+      EXPECT_LT(expected_rays(tiles, one_more, 0.5f), *inputs.ray_budget) << "round " << round;
+    }
   }
 }
 
