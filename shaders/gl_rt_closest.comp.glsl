@@ -1,7 +1,10 @@
 #version 450 core
 // The gl backend's closest-hit trace (src/gl_rt/gl_ray_tracer.h, docs/ray-tracer.md "gl"): one
 // invocation per ray, hits[i] = the closest hit of rays[i] in RayTracer's convention.
-layout(local_size_x = 64) in;
+// One warp per work group: the walk's per-invocation stacks live in local memory, and groups of 32
+// traced 20-25 % faster than groups of 64 (and groups of 128 slower still) on the H200 (docs/perf.md,
+// "The gl backend's traversal"). The host reads the size from the program.
+layout(local_size_x = 32) in;
 
 const bool kAnyHit = false;
 #include "include/gl_rt_kernel.glsl"

@@ -20,8 +20,6 @@
 namespace glint::gl_rt {
 namespace {
 
-constexpr GLuint kWorkGroupSize = 64;  // local_size_x of both kernels
-
 // The tracer compiles shaders and makes buffers on the current context, so it needs one: checked
 // before the first GL call, which without a context would crash rather than fail.
 void require_gl45_context() {
@@ -67,6 +65,12 @@ GlRayTracer::Kernel GlRayTracer::make_kernel(const char* name) {
   kernel.ray_base = kernel.program.uniform_location("ray_base");
   kernel.ray_capacity = kernel.program.uniform_location("ray_capacity");
   kernel.tlas_node_count = kernel.program.uniform_location("tlas_node_count");
+  // The shader's layout(local_size_x) is the one place the work-group size is set.
+  GLint size[3] = {0, 0, 0};
+  glGetProgramiv(kernel.program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+  if (size[0] < 1 || size[1] != 1 || size[2] != 1)
+    fail("rt gl: {} has work groups of {}x{}x{}; the dispatch needs Nx1x1", name, size[0], size[1], size[2]);
+  kernel.group_size = static_cast<GLuint>(size[0]);
   return kernel;
 }
 
@@ -133,11 +137,11 @@ void GlRayTracer::dispatch(const Kernel& kernel, GLuint rays, GLuint results, GL
   glProgramUniform1ui(kernel.program.id(), kernel.ray_capacity, capacity);
   kernel.program.use();
   // Launched for the capacity: invocations at or past the count read on the GPU return at once.
-  const std::uint64_t rays_per_dispatch = std::uint64_t{max_groups_per_dispatch_} * kWorkGroupSize;
+  const std::uint64_t rays_per_dispatch = std::uint64_t{max_groups_per_dispatch_} * kernel.group_size;
   for (std::uint64_t base = 0; base < capacity; base += rays_per_dispatch) {
     const std::uint64_t rays_here = std::min<std::uint64_t>(rays_per_dispatch, capacity - base);
     glProgramUniform1ui(kernel.program.id(), kernel.ray_base, static_cast<GLuint>(base));
-    glDispatchCompute(static_cast<GLuint>((rays_here + kWorkGroupSize - 1) / kWorkGroupSize), 1, 1);
+    glDispatchCompute(static_cast<GLuint>((rays_here + kernel.group_size - 1) / kernel.group_size), 1, 1);
   }
   // Results are read by later passes' shaders, copied or read back (buffer update), or read through
   // a persistent mapping after a fence (client mapped).

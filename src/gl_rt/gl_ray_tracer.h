@@ -38,7 +38,7 @@ public:
 
   // Compiles the two kernels on the current context; glint::Error ("--backend gl needs an OpenGL
   // 4.5 context: ...") when no OpenGL 4.5 context is current on this thread. A trace dispatches at
-  // most `max_groups_per_dispatch` work groups of 64 rays at a time (tests lower it to split short
+  // most `max_groups_per_dispatch` work groups (of the kernel's local size) at a time (tests lower it to split short
   // lists too).
   explicit GlRayTracer(std::uint32_t max_groups_per_dispatch = kMaxGroupsPerDispatch);
 
@@ -68,6 +68,7 @@ private:
   struct Kernel {
     ShaderProgram program;
     GLint ray_base = -1, ray_capacity = -1, tlas_node_count = -1;
+    GLuint group_size = 0;  // the shader's local_size_x: rays per work group
   };
   static Kernel make_kernel(const char* name);
 
