@@ -22,6 +22,8 @@ packages=(
   clang libclang-rt-dev
   # runtime tools: video encoding, plots, a virtual display for the viewer
   ffmpeg python3 python3-matplotlib xvfb
+  # scale-out over ranks (GLINT_MPI, docs/scale-out.md): Open MPI's headers and mpirun
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

@@ -13,6 +13,9 @@
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
 #include "app/bench/resume.h"
+#include "app/mpi/bench_share.h"
+#include "app/mpi/mpi_world.h"
+#include "app/mpi/rank_devices.h"
 #include "backends/registry.h"
 #include "backends/registry.h"
 #include "core/interruption.h"
@@ -248,6 +251,8 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
 }
 
 int run_bench_command(const BenchOptions& given_options) {
+  // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
+  const nlohmann::json rank_about = mpi::use_rank_devices();
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
   if (options.experiment == "adaptive") return bench::run_adaptive_experiment(options);
@@ -285,19 +290,35 @@ int run_bench_command(const BenchOptions& given_options) {
   }
 
   const OutputFolder folder(out);
-  if (const std::size_t stale = remove_stale_temporaries(out); stale > 0)
-    log_warning("bench: removed {} temporary file(s) an earlier, killed run left in {}", stale, out.string());
-  bench::write_run_settings(out, settings);
+  if (mpi::world().lead()) {  // the one process, or rank 0 of an mpirun before any rank writes
+    if (const std::size_t stale = remove_stale_temporaries(out); stale > 0)
+      log_warning("bench: removed {} temporary file(s) an earlier, killed run left in {}", stale, out.string());
+    bench::write_run_settings(out, settings);
+  }
   HeadlessGlContext context;
   const bench::CellRunSettings cell_settings{options.width, options.height, options.warmup, options.shadow_map_size,
                                              options.command_line, options.gbuffer, options.shadows};
   std::size_t ticks = 0;
   for (const PlannedCell& planned : cells)
     if (planned.to_run) ticks += bench::cell_ticks(planned.cell, planned.frames.size(), cell_settings);
-  ProgressBar progress("bench", ticks);
+  ProgressBar progress("bench", ticks, mpi::rank_progress_output());
   // Ctrl-C or SIGTERM stops the cell under way (its temporaries are removed as the stack unwinds);
   // the finished cells' files stay, and the same command resumes from them.
   const InterruptionScope interruptible;
+  nlohmann::json distribution;  // how an mpirun shared the cells (app/mpi/bench_share.h)
+  if (mpi::world().size > 1) {
+    std::vector<mpi::BenchCellPlan> plans;
+    for (const PlannedCell& planned : cells) plans.push_back({&planned.cell, &planned.frames, planned.to_run});
+    const std::optional<mpi::SharedBenchRun> shared =
+        mpi::run_bench_shared(plans, scenes, cell_settings, context, out, progress, rank_about);
+    if (!shared) return 0;  // rank 0 writes the summary
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      if (shared->outcomes[i]) {
+        cells[i].outcome = *shared->outcomes[i];
+        cells[i].to_run = false;
+      }
+    distribution = shared->distribution;
+  }
   std::size_t done = 0;
   for (const PlannedCell& planned : cells) done += planned.outcome.resumed ? 1 : 0;
   for (PlannedCell& planned : cells) {
@@ -331,6 +352,7 @@ int run_bench_command(const BenchOptions& given_options) {
     summary["cells"].push_back(
         bench::cell_summary(planned.cell, planned.outcome, out, static_cast<std::size_t>(options.interval)));
   summary["fig11"] = bench::fig11_points(summary["cells"]);
+  if (!distribution.is_null()) summary["distribution"] = distribution;
   summary["floor_plan"] = bench::floor_plan_json(scenes.at(options.scene), options.scene);
   bench::write_summary(out, summary);
 

@@ -3,6 +3,9 @@
 #include "app/frame_loop.h"
 #include "app/frame_selection.h"
 #include "app/info_command.h"
+#include "app/mpi/mpi_world.h"
+#include "app/mpi/rank_devices.h"
+#include "app/mpi/render_share.h"
 #include "app/output_folder.h"
 #include "app/png_writer_thread.h"
 #include "app/render_run_record.h"
@@ -344,6 +347,8 @@ int run_render_command(const RenderOptions& options) {
   }
   const WalkthroughAnimation animation(scene);
   const std::vector<int> frames =
+  // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
+  const nlohmann::json rank_about = mpi::use_rank_devices();
       selection ? selection->resolve(animation.frame_count()) : preview_frames(animation.frame_count());
   RenderOptions recorded = options;  // run.json names the frames the run chose
   if (!selection) {
@@ -384,6 +389,7 @@ int run_render_command(const RenderOptions& options) {
   // PNG encoding runs beside the loop (a bounded queue), so the GPU is not left idle meanwhile.
   std::optional<PngWriterThread> png_writer;
   if (images) png_writer.emplace();
+  if (mpi::world().size > 1) return mpi::run_render_shared(options, recorded, settings, scene, frames, rank_about);
 
   ProgressBar progress("render", frames.size());
   const Stopwatch run_watch;

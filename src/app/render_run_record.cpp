@@ -2,12 +2,14 @@
 
 #include "backends/registry.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 #include "core/untrusted_text.h"
 #include "core/utc_timestamp.h"
 #include "render/frame_pipeline.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <ctime>
 
 namespace glint {
@@ -180,6 +182,30 @@ void RenderRunRecord::MemorySamples::add(std::optional<std::uint64_t> bytes) {
   if (!bytes) return;
   if (!first) first = bytes;
   last = bytes;
+void RenderRunRecord::add_row(const std::vector<std::string>& row) {
+  const std::vector<std::string> header = timings_header();
+  if (row.size() != header.size())
+    fail("timings row of another rank: {} fields, expected {}", row.size(), header.size());
+  std::map<std::string, double> recorded;
+  std::optional<std::uint64_t> resident, gpu_memory;
+  const auto bytes = [](double megabytes) { return static_cast<std::uint64_t>(megabytes * kBytesPerMegabyte + 0.5); };
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    const std::string& column = header[i];
+    if (row[i].empty()) continue;  // a pass that did not run, a count not made
+    const double value = std::strtod(row[i].c_str(), nullptr);
+    if (column == "resident_mb") resident = bytes(value);
+    else if (column == "gpu_memory_used_mb") gpu_memory = bytes(value);
+    // add_frame's means are over the times (the *_ms columns) and the rays traced, not the other counts.
+    else if (column.ends_with("_ms") || column == "rays_traced") recorded[column] = value;
+  }
+  resident_.add(resident);
+  gpu_memory_.add(gpu_memory);
+  if (frames_recorded_++ == 0)
+    first_frame_ = std::move(recorded);
+  else
+    for (const auto& [column, value] : recorded) later_sums_[column] += value;
+}
+
   peak = std::max(peak.value_or(0), *bytes);
 }
 

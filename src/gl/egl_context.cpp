@@ -20,6 +20,9 @@
 #ifndef EGL_DRM_RENDER_NODE_FILE_EXT
 #define EGL_DRM_RENDER_NODE_FILE_EXT 0x3377
 #endif
+#ifndef EGL_CUDA_DEVICE_NV
+#define EGL_CUDA_DEVICE_NV 0x323A
+#endif
 
 namespace glint {
 namespace {
@@ -115,6 +118,10 @@ EglDevices query_egl_devices() {
     } else if (has_extension(extensions, "EGL_EXT_device_drm")) {
       if (const char* node = eglQueryDeviceStringEXT(device, EGL_DRM_DEVICE_FILE_EXT)) description.drm_node = node;
     }
+    EGLAttrib cuda_device = -1;
+    if (description.is_nvidia() && eglQueryDeviceAttribEXT(device, EGL_CUDA_DEVICE_NV, &cuda_device) == EGL_TRUE &&
+        cuda_device >= 0)
+      description.cuda_device = static_cast<int>(cuda_device);
     devices.descriptions.push_back(std::move(description));
   }
   return devices;
@@ -191,6 +198,11 @@ std::string gl_string(GLenum name) {
 }
 
 }  // namespace
+
+std::vector<EglDeviceDescription> list_egl_devices() {
+  require_gl_libraries();
+  return query_egl_devices().descriptions;
+}
 
 bool resolve_gl_debug_output(const HeadlessGlOptions& options) {
   if (options.debug_output) return *options.debug_output;

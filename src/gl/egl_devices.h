@@ -13,6 +13,9 @@ struct EglDeviceDescription {
   int index = 0;
   std::string extensions;  // eglQueryDeviceStringEXT(EGL_EXTENSIONS)
   std::string drm_node;    // DRM render node or device file when the device has one, else empty
+  // The CUDA device ordinal of an NVIDIA device (EGL_NV_device_cuda's EGL_CUDA_DEVICE_NV), else
+  // nullopt: how a process driving one GPU of several pairs its EGL and CUDA devices (app/mpi/).
+  std::optional<int> cuda_device = std::nullopt;
   bool is_nvidia() const { return extensions.find("EGL_NV_device_cuda") != std::string::npos; }
 };
 
@@ -25,6 +28,10 @@ std::string describe_egl_devices(const std::vector<EglDeviceDescription>& device
 // The device index named by the text of GLINT_EGL_DEVICE; anything but an index of `devices` is a
 // glint::Error listing the devices.
 int parse_egl_device_override(std::string_view text, const std::vector<EglDeviceDescription>& devices);
+
+// Every EGL device of this machine, described (no context is made); a glint::Error when EGL or its
+// device enumeration is missing. Defined in egl_context.cpp, which loads EGL.
+std::vector<EglDeviceDescription> list_egl_devices();
 
 // The GLINT_EGL_DEVICE environment variable, or nullopt when unset or empty.
 std::optional<std::string> egl_device_override_from_env();

@@ -1,5 +1,7 @@
 #include "app/bench/bench_report.h"
 
+#include "app/mpi/bench_share.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -248,6 +250,7 @@ std::string bench_report_markdown(const nlohmann::json& summary, const std::file
       "paper's numbers (GTX 780 Ti, OptiX 3/4, 1280x720, 4900 frames) are quoted beside each figure. Raw "
       "per-frame rows are in `cells/<cell>.csv`, every number of this page in `summary.json`.\n\n";
   setup_section(text, summary, extras);
+  text += mpi::distribution_markdown(summary);  // a run shared over MPI ranks: how
   fig4_section(text, summary, out);
 
   text += "## Cells\n\n| cell | status | frames | mean ms | median | p95 |\n|---|---|---:|---:|---:|---:|\n";

@@ -121,7 +121,7 @@ nlohmann::json cell_summary(const Cell& cell, const CellOutcome& outcome, const 
   const nlohmann::json side = read_side_file(cell_json_path(out, cell));
   if (side.is_object()) {
     if (side.contains("scene")) entry["scene_stats"] = side["scene"];
-    for (const char* key : {"ray_tracer", "warmup_frames", "wall_seconds"})
+    for (const char* key : {"ray_tracer", "warmup_frames", "wall_seconds", "pieces"})  // pieces: app/mpi/bench_share.h
       if (side.contains(key)) entry[key] = side[key];
   }
   return entry;
