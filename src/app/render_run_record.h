@@ -40,6 +40,13 @@ public:
   // not run (ssr with reflections off) and counts that were not made are empty fields.
   std::vector<CsvField> add_frame(const Frame& frame);
 
+  // A frame measured by another process (a rank of `mpirun glint render`, app/mpi/render_share.h),
+  // given as the timings.csv row its add_frame made: remembered for the means as add_frame does.
+  void add_row(const std::vector<std::string>& row);
+
+  // A top-level entry of run.json (a run shared over MPI ranks records them under "distribution").
+  void add_entry(const std::string& key, const nlohmann::json& value) { run_[key] = value; }
+
   // The ray tracer's backend, structure, policy and build statistics, for run.json.
   void set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats);
 
