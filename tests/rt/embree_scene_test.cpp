@@ -2,7 +2,7 @@
 // same triangles, same interval semantics, same barycentric convention.
 #include "rt/embree/embree_scene.h"
 
-#include "../accel/test_scenes.h"
+#include "accel/test_scenes.h"
 #include "accel/builders/builder.h"
 #include "accel/trace.h"
 #include "support/error_of.h"

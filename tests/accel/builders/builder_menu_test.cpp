@@ -8,7 +8,7 @@
 #include "accel/builders/primitive_bounds.h"
 #include "accel/trace.h"
 #include "scene/presets.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

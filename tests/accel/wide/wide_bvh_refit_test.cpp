@@ -4,7 +4,7 @@
 #include "accel/wide/wide_bvh_trace.h"
 #include "accel/wide/wide_bvh_validate.h"
 #include "core/error.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 #include "wide_bvh_test_support.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "accel/kdtree/kdtree_trace.h"
 #include "accel/kdtree/kdtree_validate.h"
 #include "core/error.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "accel/builders/sah_binning.h"
 #include "accel/builders/sse_box.h"
 #include "prim_ref_test_support.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

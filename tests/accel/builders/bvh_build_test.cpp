@@ -6,7 +6,7 @@
 #include "accel/bvh_validate.h"
 #include "accel/builders/primitive_bounds.h"
 #include "core/error.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -15,7 +15,7 @@
 #include "accel/wide/wide_bvh_refit.h"
 #include "core/error.h"
 #include "prim_ref_test_support.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 #include "thread_count_check.h"
 
 #include <gtest/gtest.h>

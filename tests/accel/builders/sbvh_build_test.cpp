@@ -8,7 +8,7 @@
 #include "accel/trace.h"
 #include "core/error.h"
 #include "scene/presets.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

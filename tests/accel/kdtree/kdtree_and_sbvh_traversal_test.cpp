@@ -7,7 +7,7 @@
 #include "accel/builders/primitive_bounds.h"
 #include "accel/bvh_validate.h"
 #include "accel/trace.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "accel/builders/primitive_bounds.h"
 #include "core/error.h"
 #include "same_tree_check.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 #include "thread_count_check.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 #include "accel/builders/build_trbvh.h"
 #include "accel/builders/builder.h"
 #include "accel/builders/primitive_bounds.h"
-#include "test_scenes.h"
+#include "accel/test_scenes.h"
 
 #include <gtest/gtest.h>
 
