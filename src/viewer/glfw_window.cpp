@@ -32,7 +32,9 @@ std::string no_display_message() {
 
 std::optional<std::string> GlfwWindow::why_no_display() {
   if (glfwInit() == GLFW_FALSE) return no_display_message();
-  glfwTerminate();
+  // GLFW stays initialised (the window's glfwInit is then a no-op, its destructor terminates): closing
+  // the display connection here would let an X server without -noreset (Xvfb, xvfb-run) reset, and
+  // the window's connection a moment later could fail.
   return std::nullopt;
 }
 

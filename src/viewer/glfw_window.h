@@ -20,7 +20,8 @@ public:
   GlfwWindow& operator=(const GlfwWindow&) = delete;
 
   // Nullopt when a window can be opened; otherwise the one-line message the constructor would fail
-  // with ("view: no display to open a window on (...): ...").
+  // with ("view: no display to open a window on (...): ..."). Leaves GLFW initialised when there is
+  // a display: make the window next.
   static std::optional<std::string> why_no_display();
 
   GLFWwindow* handle() const { return window_; }
