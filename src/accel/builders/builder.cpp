@@ -11,7 +11,6 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 
-
 #include <string>
 
 namespace glint::accel {
