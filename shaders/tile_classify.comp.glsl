@@ -41,6 +41,7 @@ uniform int ray_list_offset;  // first entry of the ray list in tile_lists
 uniform float ssr_only_at_most;
 uniform float rt_at_least;
 uniform float min_known_fraction;
+uniform int forced_class;  // >= 0: every tile with a reflective pixel gets it (the cost calibration's frame)
 
 const uint kNotReflective = 0u, kUnknown = 1u, kSucceeded = 2u, kFailed = 3u;
 
@@ -86,8 +87,9 @@ void main() {
 
   const uint tile = gl_WorkGroupID.y * uint(tile_columns) + gl_WorkGroupID.x;
   if (gl_LocalInvocationIndex == 0u) {
-    const uint tile_class = classify_tile(group_reflective, group_known, group_failed, ssr_only_at_most, rt_at_least,
-                                          min_known_fraction);
+    uint tile_class = classify_tile(group_reflective, group_known, group_failed, ssr_only_at_most, rt_at_least,
+                                    min_known_fraction);
+    if (forced_class >= 0 && group_reflective != 0u) tile_class = uint(forced_class);
     group_class = tile_class;
     tiles[tile] = uvec4(group_reflective, group_known, group_failed, tile_class);
     atomicAdd(class_tiles[tile_class], 1u);

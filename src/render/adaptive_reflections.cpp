@@ -65,7 +65,11 @@ void AdaptiveReflections::classify(const TileClassifyInputs& inputs, const Camer
                   ? static_cast<std::uint32_t>(std::min<double>(*decision.ray_budget, 0x7fffffff))
                   : std::numeric_limits<std::uint32_t>::max();
 
-  pass_.run(inputs, decision.thresholds);
+  // Start-up calibration of the cost lines (reflection_cost_model.h): frame 0 runs SSR + rays on
+  // every reflective tile (none is known yet), frame 1 rays only, so both stages are measured at
+  // very different amounts of work.
+  const bool calibrating = frames_ == 1 && !costs_.fixed();
+  pass_.run(inputs, decision.thresholds, calibrating ? std::optional(TileClass::rt_only) : std::nullopt);
   decisions_[slot] = decision;
   slot_frame_[slot] = frames_;
   previous_camera_ = camera;

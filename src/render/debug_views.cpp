@@ -74,4 +74,15 @@ ImageRgba8 tile_class_view(std::span<const TileClass> classes, int tile_columns,
   return image;
 }
 
+void mark_traced_tiles(ImageRgbaF& failure_mask, std::span<const TileClass> classes, int tile_columns) {
+  for (int y = 0; y < failure_mask.height; ++y)
+    for (int x = 0; x < failure_mask.width; ++x) {
+      const int gl_y = failure_mask.height - 1 - y;
+      const auto tile = static_cast<std::size_t>((gl_y / 8) * tile_columns + x / 8);
+      if (tile >= classes.size()) continue;
+      if (classes[tile] == TileClass::rt_only) failure_mask.at(x, y).x = 1.0f;
+      if (classes[tile] == TileClass::none) failure_mask.at(x, y).x = 0.0f;
+    }
+}
+
 }  // namespace glint::render

@@ -28,5 +28,8 @@ ImageRgba8 reflection_view(const ImageRgbaF& reflection);
 // first as GL's): none black, SSR only green, SSR + rays yellow, rays only red; each tile's border
 // pixel darker so the grid shows.
 ImageRgba8 tile_class_view(std::span<const TileClass> classes, int tile_columns, int width, int height);
+// --reflections auto: the failure mask as the debug views split the reflection by it (1 = traced):
+// SSR wrote it in its own tiles only, so rays-only tiles become 1 and tiles without reflection 0.
+void mark_traced_tiles(ImageRgbaF& failure_mask, std::span<const TileClass> classes, int tile_columns);
 
 }  // namespace glint::render

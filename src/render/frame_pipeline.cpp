@@ -241,7 +241,9 @@ std::vector<DebugView> FramePipeline::read_debug_views() const {
     views.push_back({"traced_reflection", reflection_view(reflection)});
     return views;
   }
-  const ImageRgbaF failure_mask = read_texture_rgbaf(ssr_->failure_mask(), kFailureMaskFormat, width(), height());
+  ImageRgbaF failure_mask = read_texture_rgbaf(ssr_->failure_mask(), kFailureMaskFormat, width(), height());
+  // auto: SSR wrote the mask in its own tiles only; rays-only tiles are traced wherever reflective.
+  if (adaptive_) mark_traced_tiles(failure_mask, adaptive_->pass().read().classes, adaptive_->pass().tile_columns());
   // Hit shading writes exactly the failed pixels, so the mask splits the image into its two sources.
   views.push_back({"ssr_reflection", reflection_view(masked(reflection, failure_mask, 0.0f))});
   views.push_back({"failure_mask", grey_view(failure_mask)});

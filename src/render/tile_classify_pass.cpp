@@ -48,7 +48,8 @@ TileClassifyPass::TileClassifyPass(int width, int height)
   check_gl("tile classification: set-up");
 }
 
-void TileClassifyPass::run(const TileClassifyInputs& inputs, const TileThresholds& thresholds) {
+void TileClassifyPass::run(const TileClassifyInputs& inputs, const TileThresholds& thresholds,
+                           std::optional<TileClass> every_tile) {
   GlPassScope scope("classify");
   require_texture("tile classification", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat,
                   width_, height_);
@@ -82,6 +83,7 @@ void TileClassifyPass::run(const TileClassifyInputs& inputs, const TileThreshold
   program_.set_uniform("ssr_only_at_most", thresholds.ssr_only_at_most);
   program_.set_uniform("rt_at_least", thresholds.rt_at_least);
   program_.set_uniform("min_known_fraction", thresholds.min_known_fraction);
+  program_.set_uniform("forced_class", every_tile ? static_cast<int>(*every_tile) : -1);
   program_.use();
   glDispatchCompute(static_cast<GLuint>(columns_), static_cast<GLuint>(rows_), 1);
   // SSR and the ray list read the lists (storage) and sizes (indirect); SSR overwrites the reflection.

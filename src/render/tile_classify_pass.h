@@ -44,7 +44,9 @@ class TileClassifyPass {
 public:
   TileClassifyPass(int width, int height);  // needs a current GL context
 
-  void run(const TileClassifyInputs& inputs, const TileThresholds& thresholds);
+  // With `every_tile`, each tile that has a reflective pixel gets that class instead of the rule's.
+  void run(const TileClassifyInputs& inputs, const TileThresholds& thresholds,
+           std::optional<TileClass> every_tile = std::nullopt);
   // Forget the history (the next run() knows nothing of earlier frames): a cut in the walkthrough.
   void reset_history() { have_history_ = false; }
 
