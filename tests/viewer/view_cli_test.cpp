@@ -148,6 +148,19 @@ TEST(ViewCli, WithoutADisplayAScriptEndingInQuitRunsOffscreen) {
   EXPECT_NE(left_open.err.find("no display"), std::string::npos) << left_open.err;
 }
 
+TEST(ViewCli, OffscreenNeedsAScriptThatEndsWithQuit) {
+  const CliResult no_script = run_glint("view atrium-simple --offscreen" + kSize);
+  EXPECT_EQ(no_script.exit_code, 1);
+  EXPECT_EQ(line_count(no_script.err), 1) << no_script.err;
+  EXPECT_NE(no_script.err.find("--offscreen needs a --script"), std::string::npos) << no_script.err;
+  const TempFolder folder;
+  const CliResult no_quit = view_script(folder, "frame 10\n", " --offscreen");
+  EXPECT_EQ(no_quit.exit_code, 1);
+  EXPECT_NE(no_quit.err.find("session.txt: --offscreen runs the script to its end, which must be `quit`"),
+            std::string::npos)
+      << no_quit.err;
+}
+
 // Starts `glint view` with `script` in a child, waits until `ready()` (a minute at most), does
 // `stop(child)` and returns the exit status (minus the signal that killed it).
 template <typename Ready, typename Stop>
