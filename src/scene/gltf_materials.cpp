@@ -9,11 +9,6 @@
 
 namespace glint {
 
-float specular_exponent_from_roughness(float roughness) {
-  const float alpha = std::max(roughness * roughness, 1e-3f);  // avoids dividing by zero at roughness 0
-  return std::clamp(2.0f / (alpha * alpha) - 2.0f, 1.0f, 2048.0f);
-}
-
 Material convert_gltf_material(const tinygltf::Material& material, int index) {
   Material out;
   out.name = material.name.empty() ? fmt::format("materials[{}]", index) : material.name;

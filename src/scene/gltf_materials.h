@@ -8,6 +8,7 @@
 //   specular_exponent  = specular_exponent_from_roughness(roughnessFactor)
 //   roughness          = roughnessFactor; emissive = emissiveFactor
 #include "scene/scene.h"
+#include "scene/specular_roughness.h"
 
 #include <tiny_gltf.h>
 
@@ -15,11 +16,6 @@
 #include <string>
 
 namespace glint {
-
-// Blinn-Phong exponent with about the highlight width of a GGX lobe of this roughness: with
-// alpha = roughness^2, n = 2 / alpha^2 - 2 (Walter et al. 2007), clamped to 1..2048 (roughness 0.5
-// gives 30, near glint's default of 32).
-float specular_exponent_from_roughness(float roughness);
 
 // The material without its texture (diffuse_texture stays -1; the loader links textures).
 Material convert_gltf_material(const tinygltf::Material& material, int index);

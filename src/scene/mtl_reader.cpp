@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "scene/obj_text_parsing.h"
+#include "scene/specular_roughness.h"
 
 #include <algorithm>
 #include <array>
@@ -53,6 +54,16 @@ struct ReflectionStatements {
   std::optional<float> mirror;         // Km
   std::optional<vec3> specular;        // Ks
   std::optional<float> illumination;   // illum
+  std::optional<float> roughness;      // Pr
+  std::optional<float> exponent;       // Ns
+
+  // The roughness of glossy reflections: Pr (clamped to 0..1) when given, else the roughness whose
+  // GGX lobe matches the Blinn-Phong exponent Ns (specular_roughness.h), else 0 (a mirror).
+  float glossy_roughness() const {
+    if (roughness) return std::clamp(*roughness, 0.0f, 1.0f);
+    if (exponent) return roughness_from_specular_exponent(*exponent);
+    return 0.0f;
+  }
 
   // MTL says "this surface mirrors its surroundings" in several ways; glint has one reflectivity
   // (0..1, the weight of the mirror image). The most explicit statement wins:
@@ -79,7 +90,10 @@ public:
 
   void read_line(std::string_view line, std::size_t line_number);
   std::vector<MtlMaterial> finish() {
-    for (std::size_t i = 0; i < materials_.size(); ++i) materials_[i].material.reflectivity = reflections_[i].reflectivity();
+    for (std::size_t i = 0; i < materials_.size(); ++i) {
+      materials_[i].material.reflectivity = reflections_[i].reflectivity();
+      materials_[i].material.roughness = reflections_[i].glossy_roughness();
+    }
     return std::move(materials_);
   }
 
@@ -187,11 +201,14 @@ void MtlTextReader::read_line(std::string_view line, std::size_t line_number) {
   } else if (is_scalar_statement(keyword)) {
     const float value = read_scalar(keyword, rest);
     Material& material = current(keyword).material;
-    if (keyword == "Ns") material.specular_exponent = std::max(value, 0.0f);
+    if (keyword == "Ns") {
+      material.specular_exponent = std::max(value, 0.0f);
+      current_reflection(keyword).exponent = value;
+    }
     if (keyword == "Pm") current_reflection(keyword).metallic = value;
     if (keyword == "Km") current_reflection(keyword).mirror = value;
     if (keyword == "illum") current_reflection(keyword).illumination = value;
-    if (keyword == "Pr") material.roughness = std::clamp(value, 0.0f, 1.0f);
+    if (keyword == "Pr") current_reflection(keyword).roughness = value;
   } else if (keyword == "map_Kd") {
     const std::string_view name = texture_file_name(rest);
     if (name.empty()) fail_here("'map_Kd' needs a file name");

@@ -7,7 +7,8 @@
 //   Ns n      -> specular_exponent    map_Kd   -> diffuse texture (file name, options skipped)
 //   Pm, Km, illum 3-7 with Ks -> reflectivity (ReflectionStatements::reflectivity in mtl_reader.cpp,
 //                                docs/scene-format.md "OBJ materials": Pm, else Km, else Ks under illum 3-7)
-//   Pr r      -> roughness (clamped to 0..1; 0 when absent)
+//   Pr r      -> roughness (clamped to 0..1); without Pr, roughness_from_specular_exponent(Ns)
+//                (specular_roughness.h); 0 (a mirror) with neither
 // A colour with one number is grey (MTL spec: g and b default to r). Statements the renderer has no
 // use for (Ka, Tf, Ni, d, Tr, ...) are still checked so that a broken file is caught early.
 #include "scene/scene.h"

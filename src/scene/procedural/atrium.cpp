@@ -6,6 +6,7 @@
 #include "scene/procedural/atrium_walkthrough.h"
 #include "scene/procedural/creatures.h"
 #include "scene/procedural/textures.h"
+#include "scene/specular_roughness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -58,7 +59,8 @@ int add_texture(Scene& scene, Texture texture) {
   return static_cast<int>(scene.textures.size() - 1);
 }
 
-Material textured(const std::string& name, int texture, float specular, float exponent, float reflectivity = 0.0f) {
+Material textured(const std::string& name, int texture, float specular, float exponent, float reflectivity = 0.0f,
+                  float roughness = 0.0f) {
   Material m;
   m.name = name;
   m.diffuse = vec3(1.0f);
@@ -66,19 +68,32 @@ Material textured(const std::string& name, int texture, float specular, float ex
   m.specular = vec3(specular);
   m.specular_exponent = exponent;
   m.reflectivity = reflectivity;
+  m.roughness = roughness;
   return m;
 }
 
 ArchitectureMaterials add_building_materials(Scene& scene) {
   ArchitectureMaterials m;
-  // The polished floor is the one strongly reflective surface, as in the paper.
-  m.marble = add_material(scene, textured("marble-floor", add_texture(scene, make_marble_texture(kTextureSize)), 0.5f, 96.0f, 0.5f));
-  m.stone = add_material(scene, textured("stone", add_texture(scene, make_stone_texture(kTextureSize)), 0.05f, 16.0f));
+  // The polished floor is the one strongly reflective surface, as in the paper; glossy reflections
+  // (docs/glossy.md) get a range of roughness besides it: the gallery floor's honed stone and the
+  // balustrade's brushed metal.
+  m.marble = add_material(scene, textured("marble-floor", add_texture(scene, make_marble_texture(kTextureSize)), 0.5f, 96.0f, 0.5f, 0.06f));
+  const int stone_texture = add_texture(scene, make_stone_texture(kTextureSize));
+  m.stone = add_material(scene, textured("stone", stone_texture, 0.05f, 16.0f));
   m.brick = add_material(scene, textured("brick", add_texture(scene, make_brick_texture(kTextureSize)), 0.03f, 8.0f));
   m.plaster = add_material(scene, textured("plaster", add_texture(scene, make_plaster_texture(kTextureSize)), 0.02f, 8.0f));
   m.wood = add_material(scene, textured("wood", add_texture(scene, make_wood_texture(kTextureSize)), 0.15f, 32.0f));
   m.fabric_red = add_material(scene, textured("fabric-red", add_texture(scene, make_fabric_texture(kTextureSize, vec3(0.62f, 0.09f, 0.08f), vec3(0.85f, 0.68f, 0.25f), 71u)), 0.02f, 4.0f));
   m.fabric_blue = add_material(scene, textured("fabric-blue", add_texture(scene, make_fabric_texture(kTextureSize, vec3(0.10f, 0.18f, 0.48f), vec3(0.88f, 0.82f, 0.60f), 72u)), 0.02f, 4.0f));
+  m.polished_stone = add_material(scene, textured("polished-stone", stone_texture, 0.1f, 24.0f, 0.2f, 0.35f));
+  Material metal;
+  metal.name = "bronze";
+  metal.diffuse = vec3(0.30f, 0.20f, 0.11f);
+  metal.specular = vec3(0.75f, 0.55f, 0.35f);
+  metal.specular_exponent = specular_exponent_from_roughness(0.25f);
+  metal.reflectivity = 0.45f;  // below the floor's: the marble stays the strongest mirror, as in the paper
+  metal.roughness = 0.25f;
+  m.metal = add_material(scene, metal);
   return m;
 }
 

@@ -303,8 +303,8 @@ void add_atrium_architecture(Scene& scene, const ArchitectureMaterials& material
   add_mesh(scene, make_floor(detail), materials.marble);
   add_mesh(scene, make_columns(detail), materials.stone);
   add_mesh(scene, make_arcades(detail), materials.stone);
-  add_mesh(scene, make_gallery_floor(detail), materials.stone);
-  add_mesh(scene, make_balustrade(detail), materials.stone);
+  add_mesh(scene, make_gallery_floor(detail), materials.polished_stone);
+  add_mesh(scene, make_balustrade(detail), materials.metal);
   add_mesh(scene, make_ceilings(detail), materials.plaster);
   add_mesh(scene, make_walls(detail), materials.brick);
   add_mesh(scene, make_beams(detail), materials.wood);

@@ -11,6 +11,8 @@ namespace glint::procedural {
 
 struct ArchitectureMaterials {
   std::uint32_t marble = 0, stone = 0, brick = 0, plaster = 0, wood = 0, fabric_red = 0, fabric_blue = 0;
+  std::uint32_t polished_stone = 0;  // the gallery floor: stone, honed to a rough gloss
+  std::uint32_t metal = 0;           // the balustrade: brushed bronze
 };
 
 // Tessellation knobs: walls, floors and ceilings are split into quads of at most `flat_segment`
