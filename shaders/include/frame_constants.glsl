@@ -6,8 +6,10 @@
 //   sky_color              rgb linear, w unused
 //   near_far               x near, y far (world units), zw unused
 //   viewport               x width, y height, z frame number, w unused
+//   reflection_sampling    x SSR roughness cutoff, y sample index, z samples per pixel, w 1 = glossy
+//                          (0: every surface a mirror); include/glossy_sampling.glsl, docs/glossy.md
 layout(std140, binding = 0) uniform FrameConstants {
   mat4 view; mat4 projection; mat4 view_projection; mat4 inverse_view; mat4 inverse_projection;
   vec4 camera_position; vec4 light_position_range; vec4 light_color_intensity; vec4 sky_color;
-  vec4 near_far; ivec4 viewport;
+  vec4 near_far; ivec4 viewport; vec4 reflection_sampling;
 };

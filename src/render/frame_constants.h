@@ -10,6 +10,8 @@
 //     vec4 sky_color;              // rgb linear, w unused
 //     vec4 near_far;               // x near, y far (world units), zw unused
 //     ivec4 viewport;              // x width, y height, z frame number, w unused
+//     vec4 reflection_sampling;    // x SSR roughness cutoff, y sample index, z samples per pixel,
+//                                  // w 1 = glossy reflections (0: every surface a mirror); docs/glossy.md
 //   };
 #include "core/math.h"
 #include "scene/camera_path.h"
@@ -34,8 +36,9 @@ struct FrameConstants {
   vec4 sky_color{0.0f};
   vec4 near_far{0.0f};
   glm::ivec4 viewport{0};
+  vec4 reflection_sampling{0.0f};  // all 0: mirrors (render/reflection_sampling.h writes it)
 };
-static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants) == 5 * 64 + 6 * 16,
+static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants) == 5 * 64 + 7 * 16,
               "FrameConstants must match the std140 block above");
 
 // Near and far clip distances that enclose `world_bounds` from any camera inside or near it: far is
