@@ -7,6 +7,9 @@
 // hybrid shadows: the answer of a shadow ray cast from the hit, hit_shadow_rays.comp.glsl), and
 // surface_radiance() with the reflecting surface as the viewer. The result goes to the ray's pixel
 // of the reflection image as vec4(radiance, distance from the reflecting surface to the hit).
+// Glossy reflections (docs/glossy.md): the radiance is multiplied by the sampled direction's BRDF
+// weight (reflection_weight of include/glossy_sampling.glsl, from the reflecting pixel's G-buffer
+// normal and roughness); a mirror's weight is exactly 1.
 //
 // Texture level of detail: ray cones (Akenine-Moller et al., "Texture Level of Detail Strategies
 // for Real-Time Ray Tracing", Ray Tracing Gems 2019, ch. 20). A pixel's cone opens by
@@ -25,6 +28,7 @@ layout(local_size_x = 64) in;
 #include "include/cube_shadow.glsl"
 #include "include/trilinear_texel.glsl"
 #include "include/occlusion_flag.glsl"
+#include "include/glossy_sampling.glsl"
 
 struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
 struct Hit { float t; uint instance; uint prim; float u; float v; };    // accel::Hit
@@ -35,6 +39,9 @@ layout(std430, binding = 8) readonly buffer Hits { Hit hits[]; };
 layout(binding = 0, rgba16f) uniform writeonly image2D reflection;
 layout(binding = 0) uniform sampler2DArray material_textures;  // sRGB layers: sampling gives linear
 layout(binding = 1) uniform samplerCube shadow_cube;
+// The reflecting pixels' normal + roughness, read when glossy_weight is 1.
+layout(binding = 1, rgba16f) uniform readonly image2D world_normal_roughness;
+uniform int glossy_weight;
 
 // Written by the ray-list pass: the shader reads the number of rays itself, so a GPU ray tracer's
 // frame can be shaded without the host ever learning it (the dispatch covers max_rays).
@@ -64,6 +71,16 @@ float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, fl
   return log2(max(cone_width * sqrt(uv_area / world_area) * texture_layer_size / cos_incidence, 1e-8));
 }
 
+// The BRDF weight of ray i's direction at its pixel (1 for a mirror or without the G-buffer).
+float sample_weight(ivec2 pixel, Ray ray) {
+  if (glossy_weight == 0) return 1.0;
+  const vec4 normal_roughness = imageLoad(world_normal_roughness, pixel);
+  const float roughness = glossy_roughness(normal_roughness.w);
+  if (roughness <= 0.0) return 1.0;
+  return reflection_weight(normalize(ray.origin - camera_position.xyz), normalize(normal_roughness.xyz), roughness,
+                           normalize(ray.direction));
+}
+
 void main() {
   const int i = int(gl_GlobalInvocationID.x);
   if (uint(i) >= ray_count) return;
@@ -71,8 +88,9 @@ void main() {
   const ivec2 pixel = ivec2(int(pixel_index) % viewport.x, int(pixel_index) / viewport.x);
   const Ray ray = rays[i];
   const Hit hit = hits[i];
+  const float weight = sample_weight(pixel, ray);
   if (hit.prim == kInvalidIndex) {
-    imageStore(reflection, pixel, vec4(sky_color.rgb, miss_distance));
+    imageStore(reflection, pixel, vec4(weight * sky_color.rgb, miss_distance));
     return;
   }
 
@@ -96,5 +114,5 @@ void main() {
                                              : cube_shadow_visibility(shadow_cube, shadow_settings, position, normal);
   const vec3 to_viewer = -normalize(ray.direction);
   const vec3 radiance = surface_radiance(position, normal, to_viewer, albedo, material, shadow, ambient_fraction);
-  imageStore(reflection, pixel, vec4(radiance, hit.t * length(ray.direction)));
+  imageStore(reflection, pixel, vec4(weight * radiance, hit.t * length(ray.direction)));
 }

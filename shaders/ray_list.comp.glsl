@@ -3,7 +3,8 @@
 // a list of mirror rays. A pixel is listed when it is reflective (geometry with reflectivity > 0) and
 // either trace_all is set (rt mode: every reflective pixel) or SSR marked it failed (hybrid mode).
 //   origin    = G-buffer world position + origin_offset * n
-//   direction = reflect(-v, n), unit length, t in [0, inf)
+//   direction = reflect(-v, n), unit length, t in [0, inf); on a glossy surface a GGX sample around
+//               it (pixel_reflection_direction, include/glossy_sampling.glsl, docs/glossy.md)
 // where v is the unit direction to the camera and n the G-buffer normal turned towards the camera.
 // Slots are handed out per work group (one global atomicAdd per group), so the list order varies
 // from run to run but every listed pixel appears exactly once.
@@ -16,6 +17,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "include/frame_constants.glsl"
 #include "include/tile_class_rule.glsl"
 #include "include/tile_list.glsl"
+#include "include/glossy_sampling.glsl"
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;
@@ -59,10 +61,13 @@ void main() {
   if (!listed || group_base + slot >= uint(max_rays)) return;
 
   const vec3 position = imageLoad(world_position, pixel).xyz;
-  vec3 n = normalize(imageLoad(world_normal, pixel).xyz);
+  const vec4 normal_roughness = imageLoad(world_normal, pixel);
+  vec3 n = normalize(normal_roughness.xyz);
   const vec3 v = normalize(camera_position.xyz - position);
   if (dot(n, v) < 0.0) n = -n;
   const uint i = group_base + slot;
-  rays[i] = Ray(position + origin_offset * n, 0.0, normalize(reflect(-v, n)), uintBitsToFloat(0x7f800000u));
+  // The mirror direction, or a GGX sample of it on a glossy surface (include/glossy_sampling.glsl).
+  const vec3 direction = pixel_reflection_direction(-v, n, normal_roughness.w, pixel);
+  rays[i] = Ray(position + origin_offset * n, 0.0, direction, uintBitsToFloat(0x7f800000u));
   ray_pixels[i] = uint(pixel.y * size.x + pixel.x);
 }

@@ -79,6 +79,10 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   if (options.reflection_budget_ms > 0.0) settings.adaptive.budget.ms = options.reflection_budget_ms;
   settings.adaptive.max_unreflected_fraction = options.auto_quality;
   settings.resolve.blur_radius = options.blur_radius;
+  settings.resolve.denoise = options.denoise == "on";
+  settings.sampling.glossy = options.glossy == "on";
+  settings.sampling.samples_per_pixel = options.spp;
+  settings.sampling.roughness_cutoff = options.roughness_cutoff;
   settings.resolve.exposure = options.exposure;
   settings.resolve.tone_map = render::tone_map_from_name(options.tone_map);
   settings.ray_tracing.backend = options.backend;
@@ -261,6 +265,25 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::IsMember({"gpu", "cpu"}));
   command->add_option("--blur-radius", options.blur_radius, "Reflection blur radius in pixels (0 = off)")
       ->check(CLI::Range(0, 32))
+      ->capture_default_str();
+  command->add_option("--glossy", options.glossy,
+                      "Glossy reflections: on (a material's roughness widens its reflection: GGX samples) or off "
+                      "(every surface a mirror, the paper's reflections); docs/glossy.md")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+  command->add_option("--spp", options.spp,
+                      "Reflection samples per pixel and frame (the reflection passes run once per sample; "
+                      "only the first is timed); 256 with --reflections rt --denoise off is the converged reference")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  command->add_option("--roughness-cutoff", options.roughness_cutoff,
+                      "Roughness above which SSR leaves a pixel to the rays (hybrid) or unreflected (ssr)")
+      ->check(CLI::Range(0.0f, 1.0f))
+      ->capture_default_str();
+  command->add_option("--denoise", options.denoise,
+                      "Reflection filter: on (temporal accumulation with reprojection + edge-aware spatial filter, "
+                      "docs/glossy.md) or off (the paper's Gaussian blur, --blur-radius)")
+      ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   command->add_option("--exposure", options.exposure, "Exposure applied before the tone map")
       ->check(CLI::PositiveNumber)

@@ -38,6 +38,12 @@ struct RenderOptions {
   std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda or optix, cpu otherwise
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
   int blur_radius = 2;
+  // Glossy reflections (docs/glossy.md): roughness on|off, reflection samples per pixel, the
+  // roughness above which SSR leaves a pixel to rays, and the denoiser instead of the blur.
+  std::string glossy = "off";
+  int spp = 1;
+  float roughness_cutoff = 0.6f;
+  std::string denoise = "off";
   float exposure = 1.0f;
   std::string tone_map = "aces";
   int shadow_map_size = 1024;

@@ -57,8 +57,12 @@ void FramePipelineSettings::validate() const {
   raster.validate();
   render::validate(ssr);
   render::validate(resolve);
+  render::validate(sampling);
   shadows.validate();
   if (reflections == ReflectionMode::adaptive) adaptive.validate();
+  if (reflections == ReflectionMode::adaptive && sampling.samples_per_pixel > 1)
+    fail("frame pipeline: --spp {} needs reflections ssr, hybrid or rt (auto classifies one sample per frame)",
+         sampling.samples_per_pixel);
   if (uses_ray_tracer(*this)) ray_tracing.validate();
 }
 
@@ -85,6 +89,8 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
     own_reflection_ = make_reflection_image(width, height);
     clear_reflection(own_reflection_.id());
   }
+  if (settings_.sampling.samples_per_pixel > 1 && settings_.reflections != ReflectionMode::off)
+    sample_mean_.emplace(width, height);
 }
 
 void FramePipeline::upload_meshes(std::span<const std::uint32_t> dirty_meshes) {
@@ -119,6 +125,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     shadow.after_cube = [&] { shadow_rays_->run(raster_); };
   }
   raster_.render(frame, timer, shadow);
+  write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
   if (adaptive_) {
     // Before SSR, which overwrites the failure mask the classification reads as last frame's.
     run_timed_pass(timer, "classify", [&] {
@@ -141,13 +148,46 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
   }
   if (adaptive_) adaptive_->finish_frame(slot);
+  render_more_reflection_samples(slot);
   run_timed_pass(timer, "resolve",
-                 [&] { resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image()}); });
+                 [&] {
+    resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image(), raster_.world_position(),
+                  raster_.world_normal_roughness(), raster_.frame_constants_buffer(),
+                  raster_.frame_constants().view_projection});
+  });
   final_captured_[slot] = final_readback_.has_value();
   if (final_readback_)
     final_readback_->capture_texture(slot, resolve_.final_image(), GL_RGBA, GL_UNSIGNED_BYTE,
                                      final_readback_->slot_bytes());
   ++frames_rendered_;
+}
+
+void FramePipeline::render_more_reflection_samples(std::size_t slot) {
+  if (!sample_mean_) return;
+  const int samples = settings_.sampling.samples_per_pixel;
+  RayTraceFrameStats total;
+  auto count_rays = [&] {
+    if (!ray_traced_) return;
+    const std::optional<RayTraceFrameStats> stats = ray_traced_->take_stats(ray_traced_->runs() - 1, /*wait=*/true);
+    total.rays_traced += stats->rays_traced;
+    total.reflective_pixels = stats->reflective_pixels;
+    total.trace_ms += stats->trace_ms;
+  };
+  count_rays();
+  sample_mean_->add(reflection_image(), 0, samples);
+  for (int sample = 1; sample < samples; ++sample) {
+    write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, sample);
+    if (ssr_)
+      ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(), raster_.lit(),
+                 raster_.frame_constants_buffer()});
+    if (ray_traced_) {
+      if (!ssr_) clear_reflection(own_reflection_.id());
+      ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), nullptr);
+      count_rays();
+    }
+    sample_mean_->add(reflection_image(), sample, samples);
+  }
+  sampled_ray_stats_[slot] = total;
 }
 
 void FramePipeline::set_final_capture(bool on) {
@@ -174,7 +214,9 @@ std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, b
   }
   if (ray_traced_) {
     // Pipeline frames and ray-traced runs go in step: every frame traces.
-    readback.ray_stats = ray_traced_->take_stats(ray_traced_->runs() - (frames_rendered_ - frame), wait);
+    // With --spp N > 1 every sample traced; render() summed them (waiting for each).
+    readback.ray_stats = sample_mean_ ? sampled_ray_stats_[slot]
+                                      : ray_traced_->take_stats(ray_traced_->runs() - (frames_rendered_ - frame), wait);
     if (!readback.ray_stats) return std::nullopt;
   }
   if (adaptive_) {
@@ -215,6 +257,7 @@ ImageRgba8 FramePipeline::read_final() const {
 
 std::optional<RayTraceFrameStats> FramePipeline::ray_trace_stats() {
   if (!ray_traced_ || ray_traced_->runs() == 0) return std::nullopt;
+  if (sample_mean_) return sampled_ray_stats_[static_cast<std::size_t>((frames_rendered_ - 1) % kFramesInFlight)];
   return ray_traced_->frame_stats();
 }
 

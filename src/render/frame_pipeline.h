@@ -24,6 +24,8 @@
 #include "render/ray_traced_reflections.h"
 #include "render/ray_traced_shadows.h"
 #include "render/reflection_mode.h"
+#include "render/reflection_accumulation.h"
+#include "render/reflection_sampling.h"
 #include "render/resolve_pass.h"
 #include "render/resolve_settings.h"
 #include "render/shadow_method.h"
@@ -56,6 +58,7 @@ struct FramePipelineSettings {
   RayTracingSettings ray_tracing;  // hybrid and rt reflections, rt and hybrid shadows
   ShadowSettings shadows;          // cube (default), rt or hybrid
   AdaptiveSettings adaptive;       // --reflections auto: budget, quality target
+  ReflectionSamplingSettings sampling;  // glossy or mirror, samples per pixel, SSR roughness cutoff (docs/glossy.md)
 
   void validate() const;  // throws glint::Error naming the first bad setting
 };
@@ -145,6 +148,9 @@ public:
 
 private:
   GLuint reflection_image() const;  // what resolve reads
+  // --spp N > 1 (docs/glossy.md): samples 1 .. N-1 of the reflections after the frame's first one
+  // (untimed), averaged with it into reflection_image(); their rays counted into sampled_ray_stats_.
+  void render_more_reflection_samples(std::size_t slot);
 
   const Scene* scene_;
   FramePipelineSettings settings_;
@@ -161,6 +167,8 @@ private:
   std::uint64_t frames_rendered_ = 0;
   std::optional<ReadbackRing> final_readback_;  // with final capture: RGBA8, rows bottom first
   std::array<bool, kFramesInFlight> final_captured_{};  // per slot: that frame's image was captured
+  std::optional<ReflectionAccumulation> sample_mean_;  // with --spp N > 1
+  std::array<RayTraceFrameStats, kFramesInFlight> sampled_ray_stats_{};  // per slot, with --spp N > 1
 };
 
 }  // namespace glint::render

@@ -14,6 +14,7 @@ namespace {
 constexpr GLuint kWorkGroupSize = 64;    // local_size_x in hit_shading.comp.glsl
 constexpr GLuint kReflectionUnit = 0;    // image unit of the target
 constexpr GLuint kShadowCubeUnit = 1;    // texture unit of the light's cube map (0 = material textures)
+constexpr GLuint kNormalRoughnessUnit = 1;  // image unit of the G-buffer's normal + roughness
 
 }  // namespace
 
@@ -31,6 +32,9 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays)
     fail("hit shading: scene, shadow cube and raster settings are required inputs");
   require_texture("hit shading", "reflection", inputs.reflection, kReflectionFormat, width_, height_);
   require_buffer("hit shading", "frame_constants", inputs.frame_constants);
+  if (inputs.world_normal_roughness != 0)
+    require_texture("hit shading", "world_normal_roughness", inputs.world_normal_roughness, kWorldNormalRoughnessFormat,
+                    width_, height_);
   if (max_rays > buffers_->capacity())
     fail("hit shading: {} rays, more than the ray buffers' capacity {}", max_rays, buffers_->capacity());
   if (max_rays == 0) return;
@@ -57,6 +61,10 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays)
   glBindTextureUnit(kShadowCubeUnit, cube.cube_map());
   glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   glBindImageTexture(kReflectionUnit, inputs.reflection, 0, GL_FALSE, 0, GL_READ_WRITE, kReflectionFormat);
+  program_.set_uniform("glossy_weight", inputs.world_normal_roughness != 0 ? 1 : 0);
+  if (inputs.world_normal_roughness != 0)
+    glBindImageTexture(kNormalRoughnessUnit, inputs.world_normal_roughness, 0, GL_FALSE, 0, GL_READ_ONLY,
+                       kWorldNormalRoughnessFormat);
   program_.use();
   glDispatchCompute(work_groups(max_rays, kWorkGroupSize), 1, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);

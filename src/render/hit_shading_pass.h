@@ -36,6 +36,9 @@ struct HitShadingInputs {
   // With rt and hybrid shadows: the answers of the shadow rays cast from the hits (HitShadowRays),
   // slot i for ray i, used instead of the cube map; null: the cube map.
   const OcclusionBuffers* shadow_answers = nullptr;
+  // The G-buffer's world_normal_roughness (kWorldNormalRoughnessFormat): the reflecting pixels'
+  // normal and roughness, for the BRDF weight of glossy rays (docs/glossy.md); 0: every weight 1.
+  GLuint world_normal_roughness = 0;
 };
 
 class HitShadingPass {

@@ -65,7 +65,7 @@ void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask
     // The hits' shadow rays are part of shading them (a CPU backend waits for their list here).
     if (hit_shadows_) hit_shadows_->run(buffers_, raster.gpu_scene(), raster.frame_constants_buffer(), max_rays);
     hit_shading_.run({&raster.gpu_scene(), &raster.shadow_cube(), &raster.settings(), raster.frame_constants_buffer(),
-                      reflection, hit_shadows_ ? &hit_shadows_->answers() : nullptr},
+                      reflection, hit_shadows_ ? &hit_shadows_->answers() : nullptr, raster.world_normal_roughness()},
                      max_rays);
   });
   trace_step_->finish(slot);

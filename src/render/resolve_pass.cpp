@@ -22,7 +22,10 @@ ResolvePass::ResolvePass(int width, int height, const ResolveSettings& settings)
 
 void ResolvePass::resize(int width, int height) {
   require_pass_size("resolve", width, height);
-  if (width != blur_.width() || height != blur_.height()) blur_.resize(width, height);
+  if (width != blur_.width() || height != blur_.height()) {
+    blur_.resize(width, height);
+    denoiser_.reset();
+  }
   final_ = create_texture_2d(kFinalFormat, width, height);
   check_gl("resolve: create final image");
 }
@@ -41,11 +44,21 @@ void ResolvePass::run(const ResolveInputs& inputs) {
   require_texture("resolve", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, w, h);
   require_texture("resolve", "reflection", inputs.reflection, kReflectionFormat, w, h);
 
-  blur_.run(inputs.reflection, settings_);
+  GLuint filtered = 0;
+  if (settings_.denoise) {
+    if (!denoiser_) denoiser_.emplace(w, h);
+    denoiser_->run({inputs.reflection, inputs.world_position, inputs.world_normal_roughness, inputs.albedo_reflectivity,
+                    inputs.frame_constants, inputs.view_projection},
+                   settings_);
+    filtered = denoiser_->output();
+  } else {
+    blur_.run(inputs.reflection, settings_);
+    filtered = blur_.output();
+  }
 
   glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
   glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
-  glBindImageTexture(kReflectionUnit, blur_.output(), 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
+  glBindImageTexture(kReflectionUnit, filtered, 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
   glBindImageTexture(kFinalUnit, final_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFinalFormat);
   program_.use();
   dispatch_over_image(w, h);

@@ -20,6 +20,19 @@ inline constexpr EnumNames<ToneMap, 3> kToneMapNames{
 inline std::string_view tone_map_name(ToneMap tone_map) { return kToneMapNames.name_of(tone_map); }
 inline ToneMap tone_map_from_name(std::string_view name) { return kToneMapNames.parse(name); }
 
+// The reflection denoiser (ReflectionDenoiser, docs/glossy.md), used instead of the blur with
+// ResolveSettings::denoise.
+struct DenoiseSettings {
+  float max_history = 32.0f;      // frames a pixel's history averages at most (1..1024)
+  float clamp_sigma = 1.5f;       // history clamped to the 3x3 mean +- this many deviations (> 0)
+  float depth_tolerance = 0.02f;  // reprojected history: same plane within this x camera distance (> 0)
+  float max_sigma = 4.0f;         // spatial footprint in pixels at roughness >= 0.5, first frame (>= 0)
+  float depth_sigma = 0.01f;      // spatial plane-distance scale, x camera distance (> 0)
+  float normal_power = 32.0f;     // spatial normal weight max(n.n', 0)^power (>= 0)
+  float roughness_sigma = 0.1f;   // spatial roughness weight exp(-|dr| / sigma) (> 0)
+  int iterations = 3;             // a-trous iterations, steps 1, 2, 4, ... (1..5)
+};
+
 struct ResolveSettings {
   // Distance fade of the reflection by the reflected ray's world length d (reflection.a):
   // factor 1 for d <= fade_start, falling smoothly (smoothstep) to 0 at d >= fade_end.
@@ -32,6 +45,10 @@ struct ResolveSettings {
   // Linear scale applied to lit + reflectivity x reflection before the tone map (> 0).
   float exposure = 1.0f;
   ToneMap tone_map = ToneMap::aces;
+  // --denoise on: temporal accumulation + edge-aware spatial filter (docs/glossy.md) instead of the
+  // paper's blur (blur_radius is then unused; the fade applies as before).
+  bool denoise = false;
+  DenoiseSettings denoiser;
 };
 
 // Throws glint::Error naming the first setting that is out of range.

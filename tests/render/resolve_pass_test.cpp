@@ -156,7 +156,7 @@ TEST_F(ResolvePassTest, FadeIsMonotoneInTheReflectedDistance) {
     settings.fade_end = 20.0f;
     settings.blur_radius = radius;
     ResolvePass resolve(kWidth, kHeight, settings);
-    resolve.run({images.lit.id(), images.albedo_reflectivity.id(), images.reflection.id()});
+    resolve.run({.lit = images.lit.id(), .albedo_reflectivity = images.albedo_reflectivity.id(), .reflection = images.reflection.id()});
     const std::vector<vec4> faded = testing::read_rgba_float(resolve.blurred_reflection(), kWidth, kHeight);
     const std::vector<glm::u8vec4> final_image = testing::read_rgba8(resolve.final_image(), kWidth, kHeight);
     const int y = kHeight / 2;
@@ -206,7 +206,7 @@ TEST_P(ResolveCompositeTest, FinalIsTheToneMappedSrgbEncodedSum) {
   settings.tone_map = GetParam();
   settings.exposure = GetParam() == ToneMap::none ? 1.0f : 1.5f;
   ResolvePass resolve(kWidth, kHeight, settings);
-  resolve.run({images.lit.id(), images.albedo_reflectivity.id(), images.reflection.id()});
+  resolve.run({.lit = images.lit.id(), .albedo_reflectivity = images.albedo_reflectivity.id(), .reflection = images.reflection.id()});
   const std::vector<glm::u8vec4> out = testing::read_rgba8(resolve.final_image(), kWidth, kHeight);
   int clipped = 0;
   for (std::size_t p = 0; p < kPixels; ++p) {

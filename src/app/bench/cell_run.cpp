@@ -48,6 +48,10 @@ RenderOptions render_options(const Cell& cell, const std::string& reflections, c
   options.shadow_map_size = settings.shadow_map_size;
   options.gbuffer = settings.gbuffer;
   options.shadows = settings.shadows;
+  // The paper's reflections: mirrors, one sample, its Gaussian blur (docs/glossy.md).
+  options.glossy = "off";
+  options.spp = 1;
+  options.denoise = "off";
   options.command_line = settings.command_line;
   return options;
 }

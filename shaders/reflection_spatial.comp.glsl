@@ -1,0 +1,73 @@
+#version 450 core
+// Edge-aware spatial filter of the accumulated reflection (ReflectionDenoiser, docs/glossy.md): one
+// a-trous iteration (5 x 5 B3-spline taps `step` pixels apart; the denoiser runs steps 1, 2, 4).
+// The weight of tap q for pixel p is
+//   h(i) h(j)                                            the B3-spline kernel
+//   x exp(-|offset|^2 / (2 s^2)),  s = max_sigma x min(roughness_p / 0.5, 1) / sqrt(history length_p)
+//                                                        footprint of the lobe: none for a mirror,
+//                                                        shrinking as the history converges
+//   x exp(-|n_p . (P_q - P_p)| / (depth_sigma x |P_p - camera|))   same plane (depth edges)
+//   x max(n_p . n_q, 0)^normal_power                     same orientation (normal edges)
+//   x exp(-|roughness_p - roughness_q| / roughness_sigma) same lobe width
+// over reflective taps only, normalised (a constant stays constant). a (history length) passes through.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "include/frame_constants.glsl"
+#include "include/glossy_sampling.glsl"
+
+layout(binding = 0) uniform sampler2D source;
+layout(binding = 1) uniform sampler2D world_position;
+layout(binding = 2) uniform sampler2D world_normal_roughness;
+layout(binding = 3) uniform sampler2D albedo_reflectivity;
+layout(binding = 0, rgba16f) uniform writeonly image2D filtered;
+
+uniform int step;
+uniform float max_sigma;
+uniform float depth_sigma;
+uniform float normal_power;
+uniform float roughness_sigma;
+
+const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
+
+bool reflective(ivec2 p) {
+  return texelFetch(world_position, p, 0).w != 0.0 && texelFetch(albedo_reflectivity, p, 0).a > 0.0;
+}
+
+void main() {
+  const ivec2 size = textureSize(source, 0);
+  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, size))) return;
+  const vec4 centre = texelFetch(source, pixel, 0);
+  if (!reflective(pixel)) {
+    imageStore(filtered, pixel, centre);
+    return;
+  }
+  const vec3 position = texelFetch(world_position, pixel, 0).xyz;
+  const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
+  const vec3 normal = normalize(normal_roughness.xyz);
+  const float roughness = glossy_roughness(normal_roughness.w);
+  const float sigma = max_sigma * min(roughness / 0.5, 1.0) / sqrt(max(centre.a, 1.0));
+  if (sigma <= 0.0) {
+    imageStore(filtered, pixel, centre);
+    return;
+  }
+  const float plane_scale = 1.0 / (depth_sigma * max(distance(camera_position.xyz, position), 1e-6));
+  vec3 sum = vec3(0.0);
+  float weight_sum = 0.0;
+  for (int j = -2; j <= 2; ++j)
+    for (int i = -2; i <= 2; ++i) {
+      const ivec2 offset = ivec2(i, j) * step;
+      const ivec2 q = pixel + offset;
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !reflective(q)) continue;
+      const vec4 q_normal_roughness = texelFetch(world_normal_roughness, q, 0);
+      const vec3 q_normal = normalize(q_normal_roughness.xyz);
+      const float plane = abs(dot(normal, texelFetch(world_position, q, 0).xyz - position)) * plane_scale;
+      const float d2 = float(offset.x * offset.x + offset.y * offset.y);
+      const float w = kB3[abs(i)] * kB3[abs(j)] * exp(-d2 / (2.0 * sigma * sigma)) * exp(-plane) *
+                      pow(max(dot(normal, q_normal), 0.0), normal_power) *
+                      exp(-abs(roughness - glossy_roughness(q_normal_roughness.w)) / roughness_sigma);
+      sum += w * texelFetch(source, q, 0).rgb;
+      weight_sum += w;
+    }
+  imageStore(filtered, pixel, vec4(weight_sum > 0.0 ? sum / weight_sum : centre.rgb, centre.a));
+}

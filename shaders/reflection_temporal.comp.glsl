@@ -1,0 +1,108 @@
+#version 450 core
+// Temporal accumulation of the reflection (ReflectionDenoiser, docs/glossy.md). Per reflective pixel:
+//   c        = fade(distance) * reflection.rgb     (the distance fade of docs/ssr.md, applied here)
+//   previous = the history at the pixel's previous-frame position (camera motion vector,
+//              include/reprojection.glsl), bilinear over the taps that are the same surface
+//              (plane distance and normal tests); none: disoccluded, the history restarts
+//   previous is clamped to mean +- clamp_sigma x deviation of c over the 3x3 neighbourhood
+//   n        = min(history length + 1, max_history),   out = mix(previous, c, 1 / n)
+// Mirrors (roughness 0) and pixels without history pass c through (n = 1). Output: rgb, a = n
+// (0 for non-reflective pixels); motion: the previous position (pixels), (-1, -1) when disoccluded.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "include/frame_constants.glsl"
+#include "include/glossy_sampling.glsl"
+#include "include/reprojection.glsl"
+
+// Inputs are read with texelFetch (no filtering): images are limited to 8 per shader on some GPUs.
+layout(binding = 0) uniform sampler2D reflection;
+layout(binding = 1) uniform sampler2D world_position;
+layout(binding = 2) uniform sampler2D world_normal_roughness;
+layout(binding = 3) uniform sampler2D albedo_reflectivity;
+layout(binding = 4) uniform sampler2D history;
+layout(binding = 5) uniform sampler2D previous_position;
+layout(binding = 6) uniform sampler2D previous_normal;
+layout(binding = 0, rgba16f) uniform writeonly image2D accumulated;
+layout(binding = 24, std430) writeonly buffer Motion { vec2 motion[]; };
+
+uniform mat4 previous_view_projection;
+uniform int has_history;
+uniform float max_history;
+uniform float clamp_sigma;
+uniform float depth_tolerance;
+uniform float fade_start;
+uniform float fade_end;
+
+bool reflective(ivec2 p) {
+  return texelFetch(world_position, p, 0).w != 0.0 && texelFetch(albedo_reflectivity, p, 0).a > 0.0;
+}
+
+vec3 faded(ivec2 p) {
+  const vec4 value = texelFetch(reflection, p, 0);
+  const float fade = fade_end > 0.0 ? 1.0 - smoothstep(fade_start, fade_end, value.a) : 1.0;
+  return value.rgb * fade;
+}
+
+void main() {
+  const ivec2 size = textureSize(reflection, 0);
+  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, size))) return;
+  const uint index = uint(pixel.y * size.x + pixel.x);
+  motion[index] = vec2(-1.0);
+  if (!reflective(pixel)) {
+    imageStore(accumulated, pixel, vec4(0.0));
+    return;
+  }
+  const vec3 c = faded(pixel);
+  const vec4 position = texelFetch(world_position, pixel, 0);
+  const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
+  const vec3 normal = normalize(normal_roughness.xyz);
+  const vec2 previous = previous_pixel_position(previous_view_projection, position.xyz, vec2(size));
+
+  // Bilinear taps around the previous position that are this surface.
+  const vec2 base = previous - 0.5;
+  const ivec2 corner = ivec2(floor(base));
+  const vec2 f = base - vec2(corner);
+  const float camera_distance = distance(camera_position.xyz, position.xyz);
+  vec4 sum = vec4(0.0);
+  float weight = 0.0;
+  if (has_history != 0 && previous.x >= 0.0) {
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const ivec2 tap = corner + ivec2(i, j);
+        if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, size))) continue;
+        if (!same_surface(position.xyz, normal, camera_distance, texelFetch(previous_position, tap, 0),
+                          normalize(texelFetch(previous_normal, tap, 0).xyz), depth_tolerance))
+          continue;
+        const float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+        sum += w * texelFetch(history, tap, 0);
+        weight += w;
+      }
+  }
+  const bool glossy = glossy_roughness(normal_roughness.w) > 0.0;
+  if (!glossy || weight < 1e-3) {
+    imageStore(accumulated, pixel, vec4(c, 1.0));
+    return;
+  }
+  motion[index] = previous;
+  vec4 history_value = sum / weight;
+
+  // Neighbourhood clamp: the history may not stray far from what this frame sees around the pixel.
+  vec3 mean = vec3(0.0), square = vec3(0.0);
+  float count = 0.0;
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      const ivec2 q = pixel + ivec2(x, y);
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !reflective(q)) continue;
+      const vec3 v = faded(q);
+      mean += v;
+      square += v * v;
+      count += 1.0;
+    }
+  mean /= count;
+  const vec3 deviation = sqrt(max(square / count - mean * mean, vec3(0.0)));
+  const vec3 clamped = clamp(history_value.rgb, mean - clamp_sigma * deviation, mean + clamp_sigma * deviation);
+
+  const float n = min(history_value.a + 1.0, max_history);
+  imageStore(accumulated, pixel, vec4(mix(clamped, c, 1.0 / n), n));
+}
