@@ -252,7 +252,7 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
 
 int run_bench_command(const BenchOptions& given_options) {
   // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
-  const nlohmann::json rank_about = mpi::use_rank_devices();
+  const mpi::RankSession rank;
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
   if (options.experiment == "adaptive") return bench::run_adaptive_experiment(options);
@@ -310,7 +310,7 @@ int run_bench_command(const BenchOptions& given_options) {
     std::vector<mpi::BenchCellPlan> plans;
     for (const PlannedCell& planned : cells) plans.push_back({&planned.cell, &planned.frames, planned.to_run});
     const std::optional<mpi::SharedBenchRun> shared =
-        mpi::run_bench_shared(plans, scenes, cell_settings, context, out, progress, rank_about);
+        mpi::run_bench_shared(plans, scenes, cell_settings, context, out, progress, rank.about());
     if (!shared) return 0;  // rank 0 writes the summary
     for (std::size_t i = 0; i < cells.size(); ++i)
       if (shared->outcomes[i]) {

@@ -347,6 +347,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
 }
 
 int run_render_command(const RenderOptions& options) {
+  // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
+  const mpi::RankSession rank;
   const render::FramePipelineSettings settings = render_pipeline_settings(options);
   // Checked before the scene is loaded, so that a typo costs no loading time. No --frames: a preview.
   std::optional<FrameSelection> selection;
@@ -370,8 +372,6 @@ int run_render_command(const RenderOptions& options) {
   }
   const WalkthroughAnimation animation(scene);
   const std::vector<int> frames =
-  // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
-  const nlohmann::json rank_about = mpi::use_rank_devices();
       selection ? selection->resolve(animation.frame_count()) : preview_frames(animation.frame_count());
   RenderOptions recorded = options;  // run.json names the frames the run chose
   if (!selection) {
@@ -389,6 +389,7 @@ int run_render_command(const RenderOptions& options) {
   }
   if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
+  if (mpi::world().size > 1) return mpi::run_render_shared(options, recorded, settings, scene, frames, rank.about());
   const OutputFolder out(options.out, options.overwrite ? EarlierRun::replace : EarlierRun::refuse);
   HeadlessGlContext context;  // logs its renderer with --verbose
   const bool images = !options.timings_only;
@@ -412,7 +413,6 @@ int run_render_command(const RenderOptions& options) {
   // PNG encoding runs beside the loop (a bounded queue), so the GPU is not left idle meanwhile.
   std::optional<PngWriterThread> png_writer;
   if (images) png_writer.emplace();
-  if (mpi::world().size > 1) return mpi::run_render_shared(options, recorded, settings, scene, frames, rank_about);
 
   ProgressBar progress("render", frames.size());
   const Stopwatch run_watch;
