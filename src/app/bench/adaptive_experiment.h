@@ -3,7 +3,8 @@
 // against reflection cost for ssr, hybrid, rt and auto (unbudgeted and at a few ray budgets) on
 // every scene given (--scene, --simple-scene), at the quality frames of Tables I/II (those the
 // walkthrough has), each after --warmup frames of the walkthrough just before it so auto has its
-// history. Writes DIR/adaptive.csv (one row per scene, frame and configuration), DIR/summary.json
+// history, and rendered three times (the render with the least reflection time is kept: a shared
+// machine's other work only adds time). Writes DIR/adaptive.csv (one row per scene, frame and configuration), DIR/summary.json
 // (experiment "adaptive": per scene and configuration the means and whether the point is on the
 // Pareto front), DIR/report.md (a table per scene) and the Pareto chart (charts/adaptive.png/svg)
 // through tools/plot_bench.py. Not resumable: a run renders everything again.
