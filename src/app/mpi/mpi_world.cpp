@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <limits>
@@ -16,10 +17,15 @@
 namespace glint::mpi {
 namespace {
 
+std::atomic<bool> g_command_failed = false;
+
 void finalize_at_exit() {
   int finalized = 0;
   MPI_Finalized(&finalized);
-  if (!finalized) MPI_Finalize();
+  if (finalized) return;
+  // The error is printed by now (cli.cpp); the other ranks may be waiting for this one.
+  if (g_command_failed && world().size > 1) MPI_Abort(MPI_COMM_WORLD, 1);
+  MPI_Finalize();
 }
 
 Rank start() {
@@ -104,6 +110,8 @@ void barrier() {
     pause = std::min(pause * 2, std::chrono::microseconds(5000));
   }
 }
+
+void mark_command_failed() { g_command_failed = true; }
 
 void abort_all(int exit_code) {
   MPI_Abort(MPI_COMM_WORLD, exit_code);

@@ -43,6 +43,10 @@ Message receive_text(int from, int tag);
 // Returns once every rank called it (MPI_Ibarrier, polled as receive_text polls); nothing with one rank.
 void barrier();
 
+// Says that this rank's command failed: at exit it ends every rank with MPI_Abort instead of
+// finalizing (MPI_Finalize would wait for ranks that wait for it). Nothing without MPI.
+void mark_command_failed();
+
 // Ends every rank at once (MPI_Abort): for an error after the ranks started to share work, where
 // returning would leave the others waiting for a message that never comes.
 [[noreturn]] void abort_all(int exit_code);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <exception>
 
 namespace glint::mpi {
 
@@ -44,6 +45,19 @@ RankDevices choose_rank_devices(int local_rank, const std::vector<EglDeviceDescr
   }
   if (!chosen.cuda_device && cuda_count > 0) chosen.cuda_device = local_rank % cuda_count;
   return chosen;
+}
+
+RankSession::RankSession() : exceptions_(std::uncaught_exceptions()) {
+  try {
+    about_ = use_rank_devices();
+  } catch (...) {
+    mark_command_failed();  // a bad GLINT_EGL_DEVICE on one rank: the others must not wait for it
+    throw;
+  }
+}
+
+RankSession::~RankSession() {
+  if (std::uncaught_exceptions() > exceptions_) mark_command_failed();
 }
 
 nlohmann::json use_rank_devices() {

@@ -25,6 +25,22 @@ struct RankDevices {
 RankDevices choose_rank_devices(int local_rank, const std::vector<EglDeviceDescription>& devices, int cuda_count,
                                 const std::optional<int>& egl_override);
 
+// A command's stay on its rank (render and bench make one first thing): it chooses the rank's devices
+// (use_rank_devices) and, when the command leaves by an exception, marks it failed so that the exit
+// ends every rank (mpi_world.h) instead of leaving the others waiting for this one.
+class RankSession {
+public:
+  RankSession();
+  ~RankSession();
+  RankSession(const RankSession&) = delete;
+  RankSession& operator=(const RankSession&) = delete;
+  const nlohmann::json& about() const { return about_; }  // use_rank_devices()'s answer
+
+private:
+  nlohmann::json about_;
+  int exceptions_ = 0;
+};
+
 // On a rank of a run with several ranks: chooses this rank's devices, exports GLINT_EGL_DEVICE for
 // the contexts it makes and makes the CUDA device current on this thread, before any other GL or
 // CUDA call of the command. Returns what the rank says of itself (rank, host, devices) for the

@@ -2,6 +2,7 @@
 
 #include "app/mpi/mpi_world.h"
 #include "core/error.h"
+#include "core/interruption.h"
 #include "core/log.h"
 
 #include <fmt/format.h>
@@ -55,6 +56,9 @@ Outcome run_piece(std::size_t piece, const std::function<nlohmann::json(std::siz
     outcome.ok = true;
   } catch (const RankFailure& failure) {
     outcome.error = failure.what();
+    outcome.retire = true;
+  } catch (const Interrupted& interrupted) {  // Ctrl-C or SIGTERM: this rank starts nothing more
+    outcome.error = interrupted.what();
     outcome.retire = true;
   } catch (const Error& error) {
     outcome.error = error.what();
