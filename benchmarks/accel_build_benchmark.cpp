@@ -36,6 +36,10 @@
 namespace glint::accel {
 namespace {
 
+using rt::EmbreeDevice;
+using rt::EmbreeQuality;
+using rt::EmbreeScene;
+
 // The scene's world triangles, indexed (one vertex block per instance), exactly as `glint
 // accel-bench` flattens them: Embree's builds depend on the vertex count, so a soup of three
 // vertices per triangle would slow them down (by about a third on 2 threads) and flatter glint.

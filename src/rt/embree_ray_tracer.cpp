@@ -20,7 +20,7 @@ constexpr size_t kRayGrain = 64;
 
 }  // namespace
 
-EmbreeRayTracer::EmbreeRayTracer() : device_(std::make_unique<accel::EmbreeDevice>()) {}
+EmbreeRayTracer::EmbreeRayTracer() : device_(std::make_unique<EmbreeDevice>()) {}
 
 EmbreeRayTracer::~EmbreeRayTracer() { release(); }
 
@@ -151,7 +151,7 @@ void EmbreeRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
       RTCRayHit query;
-      query.ray = accel::embree_ray(rays[i]);
+      query.ray = embree_ray(rays[i]);
       query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(top_, &context, &query);
@@ -177,7 +177,7 @@ void EmbreeRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      RTCRay query = accel::embree_ray(rays[i]);
+      RTCRay query = embree_ray(rays[i]);
       // Embree's occlusion query stops at the first hit and marks it by setting tfar to -infinity.
       rtcOccluded1(top_, &context, &query);
       occluded[i] = query.tfar == -accel::kInfinity ? 1 : 0;

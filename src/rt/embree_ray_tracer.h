@@ -47,7 +47,7 @@ private:
   void set_instance_transforms(const Scene& scene);
 
   // unique_ptr: the device must not move (Embree holds a pointer to it for its callbacks).
-  std::unique_ptr<accel::EmbreeDevice> device_;
+  std::unique_ptr<EmbreeDevice> device_;
   SceneShape shape_;
   std::vector<MeshScene> meshes_;
   std::vector<RTCGeometry> instances_;  // one per Scene::instance, geomID = its index

@@ -74,7 +74,7 @@ void expect_complete(const Table& table, const char* label) {
 
 TEST(EnumNames, EveryNamedEnumRoundTripsAndListsItsNames) {
   expect_complete(accel::kBvhBuilderNames, "BvhBuilder");
-  expect_complete(accel::kEmbreeQualityNames, "EmbreeQuality");
+  expect_complete(rt::kEmbreeQualityNames, "EmbreeQuality");
   expect_complete(rt::kUpdatePolicyNames, "UpdatePolicy");
   expect_complete(cuda::kTraceKernelNames, "TraceKernel");
   expect_complete(cuda::kGpuBvhBuilderNames, "GpuBvhBuilder");

@@ -16,6 +16,12 @@
 namespace glint::accel {
 namespace {
 
+using rt::embree_quality_name;
+using rt::EmbreeDevice;
+using rt::EmbreeQuality;
+using rt::EmbreeScene;
+using rt::kAllEmbreeQualities;
+using rt::parse_embree_quality;
 using testing::TestMesh;
 
 // Embree runs its own (non-identical) triangle test, so t agrees to rounding, not bit for bit;

@@ -34,7 +34,7 @@ const CandidateEntry& find_entry(const std::vector<CandidateEntry>& menu, const 
 }
 
 // The rays of every requested frame, appended in frame order.
-std::vector<accel::Ray> make_rays(const Scene& scene, const rt::SceneGeometry& geometry, const accel::EmbreeDevice& device,
+std::vector<accel::Ray> make_rays(const Scene& scene, const rt::SceneGeometry& geometry, const rt::EmbreeDevice& device,
                                   const BenchOptions& options) {
   if (options.rays == RayKind::random) {
     const size_t count = static_cast<size_t>(options.width) * static_cast<size_t>(options.height) *
@@ -44,8 +44,8 @@ std::vector<accel::Ray> make_rays(const Scene& scene, const rt::SceneGeometry& g
   if (options.frames.empty()) fail("accel-bench: no frames given for {} rays", ray_kind_name(options.rays));
   const WalkthroughAnimation animation(scene);
   // Reflection rays start where primary rays hit: found with Embree, outside of any timing.
-  std::optional<accel::EmbreeScene> tracer;
-  if (options.rays == RayKind::reflection) tracer.emplace(device, geometry.mesh(), accel::EmbreeQuality::medium);
+  std::optional<rt::EmbreeScene> tracer;
+  if (options.rays == RayKind::reflection) tracer.emplace(device, geometry.mesh(), rt::EmbreeQuality::medium);
   std::vector<accel::Ray> rays;
   for (const int frame : options.frames) {
     if (frame < 0 || frame >= animation.frame_count())
@@ -209,7 +209,7 @@ BenchReport run_accel_bench(Scene& scene, const BenchOptions& options) {
   if (options.width < 1 || options.height < 1)
     fail("accel-bench: image size {}x{} must be at least 1x1", options.width, options.height);
   if (options.deform_frames < 0) fail("accel-bench: deform frames must be >= 0, not {}", options.deform_frames);
-  const accel::EmbreeDevice device;
+  const rt::EmbreeDevice device;
   const std::vector<CandidateEntry> menu = candidate_menu(device);
   for (const std::string& name : options.structures) (void)find_entry(menu, name);  // fail before any work
 

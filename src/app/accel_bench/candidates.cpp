@@ -23,9 +23,9 @@
 namespace glint::accel_bench {
 namespace {
 
-std::string embree_name(accel::EmbreeQuality quality) {
+std::string embree_name(rt::EmbreeQuality quality) {
   std::string name = "embree-";
-  name += accel::embree_quality_name(quality);
+  name += rt::embree_quality_name(quality);
   return name;
 }
 
@@ -137,19 +137,19 @@ Candidate kdtree_candidate() {
   return candidate;
 }
 
-Candidate embree_candidate(const accel::EmbreeDevice& device, accel::EmbreeQuality quality) {
-  auto scene = std::make_shared<std::unique_ptr<accel::EmbreeScene>>();
+Candidate embree_candidate(const rt::EmbreeDevice& device, rt::EmbreeQuality quality) {
+  auto scene = std::make_shared<std::unique_ptr<rt::EmbreeScene>>();
   Candidate candidate;
   candidate.name = embree_name(quality);
   candidate.build = [scene, &device, quality](const accel::TriangleMesh& mesh) {
     scene->reset();  // free the old BVH first so the memory monitor counts only the new one
-    *scene = std::make_unique<accel::EmbreeScene>(device, mesh, quality);
+    *scene = std::make_unique<rt::EmbreeScene>(device, mesh, quality);
     return (*scene)->build_ms();
   };
   candidate.refit = [scene, quality](const accel::TriangleMesh& mesh) -> std::optional<double> {
     if (!*scene) fail("accel-bench: refit before build");
     // Only the dynamic-scene quality refits; an update of the others would be a rebuild.
-    if (quality != accel::EmbreeQuality::refit) return std::nullopt;
+    if (quality != rt::EmbreeQuality::refit) return std::nullopt;
     (*scene)->update_vertices(std::span(mesh.positions, mesh.indices ? mesh.vertex_count : 3 * mesh.triangle_count));
     return (*scene)->update_ms();
   };
@@ -244,7 +244,7 @@ std::string wide_candidate_name(accel::BvhBuilder builder, int width) {
   return name;
 }
 
-std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
+std::vector<CandidateEntry> candidate_menu(const rt::EmbreeDevice& device) {
   std::vector<CandidateEntry> menu;
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({std::string(accel::builder_name(builder)), [builder] { return bvh_candidate(builder); }});
@@ -253,7 +253,7 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
     menu.push_back({wide_candidate_name(builder, 4), [builder] { return wide_candidate<4>(builder); }});
     menu.push_back({wide_candidate_name(builder, 8), [builder] { return wide_candidate<8>(builder); }});
   }
-  for (const accel::EmbreeQuality quality : accel::kAllEmbreeQualities)
+  for (const rt::EmbreeQuality quality : rt::kAllEmbreeQualities)
     menu.push_back({embree_name(quality), [&device, quality] { return embree_candidate(device, quality); }});
   for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
     menu.push_back({cuda_name(builder), [builder] { return cuda_candidate(builder); }});
@@ -267,7 +267,7 @@ std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device) {
 
 std::vector<std::string> embree_candidate_names() {
   std::vector<std::string> names;
-  for (const accel::EmbreeQuality quality : accel::kAllEmbreeQualities) names.push_back(embree_name(quality));
+  for (const rt::EmbreeQuality quality : rt::kAllEmbreeQualities) names.push_back(embree_name(quality));
   return names;
 }
 

@@ -53,7 +53,7 @@ struct CandidateEntry {
 // (cuda/gpu_bench_kdtree.h; making one fails with one clear line without CUDA or a GPU), then
 // "optix-fasttrace" and "optix-fastbuild" (candidates_optix.h).
 // `device` must outlive the candidates.
-std::vector<CandidateEntry> candidate_menu(const accel::EmbreeDevice& device);
+std::vector<CandidateEntry> candidate_menu(const rt::EmbreeDevice& device);
 
 // The names candidate_menu() has, without needing a device (for validating command lines).
 // The binary builders whose BVHs the menu also offers collapsed to 4 and 8 wide ("sah-wide8", ...):

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 
-namespace glint::accel {
+namespace glint::rt {
 
 std::string_view embree_error_name(RTCError code) {
   switch (code) {
@@ -59,4 +59,4 @@ void EmbreeDevice::check(std::string_view what) const {
   fail("embree: {}: {}", what, message);
 }
 
-}  // namespace glint::accel
+}  // namespace glint::rt

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace glint::accel {
+namespace glint::rt {
 
 class EmbreeDevice {
 public:
@@ -46,4 +46,4 @@ private:
 // Embree's name of an error code ("RTC_ERROR_INVALID_ARGUMENT", ...).
 std::string_view embree_error_name(RTCError code);
 
-}  // namespace glint::accel
+}  // namespace glint::rt

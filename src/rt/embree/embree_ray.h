@@ -6,9 +6,9 @@
 
 #include <embree3/rtcore.h>
 
-namespace glint::accel {
+namespace glint::rt {
 
-inline RTCRay embree_ray(const Ray& ray) {
+inline RTCRay embree_ray(const accel::Ray& ray) {
   RTCRay query;
   query.org_x = ray.origin.x;
   query.org_y = ray.origin.y;
@@ -25,4 +25,4 @@ inline RTCRay embree_ray(const Ray& ray) {
   return query;
 }
 
-}  // namespace glint::accel
+}  // namespace glint::rt

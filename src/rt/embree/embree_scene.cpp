@@ -6,7 +6,7 @@
 #include <cstring>
 #include <numeric>
 
-namespace glint::accel {
+namespace glint::rt {
 namespace {
 
 RTCBuildQuality build_quality(EmbreeQuality quality) {
@@ -21,7 +21,7 @@ RTCBuildQuality build_quality(EmbreeQuality quality) {
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const EmbreeDevice& device, const TriangleMesh& mesh, EmbreeQuality quality)
+EmbreeScene::EmbreeScene(const EmbreeDevice& device, const accel::TriangleMesh& mesh, EmbreeQuality quality)
     : device_(device), quality_(quality), triangle_count_(mesh.triangle_count) {
   const Stopwatch watch;
   const int64_t bytes_before = device.allocated_bytes();
@@ -98,4 +98,4 @@ Aabb EmbreeScene::bounds() const {
   return box;
 }
 
-}  // namespace glint::accel
+}  // namespace glint::rt

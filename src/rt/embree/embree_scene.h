@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace glint::accel {
+namespace glint::rt {
 
 // low/medium/high: RTC_BUILD_QUALITY_LOW/MEDIUM/HIGH of a static scene (a vertex update rebuilds).
 // refit: Embree's dynamic-scene pattern (RTC_SCENE_FLAG_DYNAMIC, geometry quality
@@ -38,7 +38,7 @@ public:
   // stay alive and unchanged while this scene lives; vertices are copied into an Embree-owned
   // buffer, because Embree reads the last vertex with a 16-byte load and a caller's tightly packed
   // vec3 array has no padding after it. A pre-gathered soup gets its own index buffer 0, 1, 2, ...
-  EmbreeScene(const EmbreeDevice& device, const TriangleMesh& mesh, EmbreeQuality quality);
+  EmbreeScene(const EmbreeDevice& device, const accel::TriangleMesh& mesh, EmbreeQuality quality);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -51,9 +51,9 @@ public:
   // hits[i] = closest hit of rays[i] in [t_min, t_max]: t, instance 0, prim = Embree's primID (the
   // triangle's index in the mesh), u, v with point = (1 - u - v) v0 + u v1 + v v2 (Embree's
   // barycentrics are the same as glint's). Hit{} on a miss. TBB-parallel.
-  void trace_closest(std::span<const Ray> rays, std::span<Hit> hits) const;
+  void trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const;
   // occluded[i] = 1 when anything lies on rays[i] within [t_min, t_max].
-  void trace_any(std::span<const Ray> rays, std::span<uint8_t> occluded) const;
+  void trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const;
 
   EmbreeQuality quality() const { return quality_; }
   uint32_t triangle_count() const { return triangle_count_; }
@@ -76,4 +76,4 @@ private:
   int64_t build_bytes_ = 0;
 };
 
-}  // namespace glint::accel
+}  // namespace glint::rt

@@ -14,7 +14,7 @@
 
 #include <algorithm>
 
-namespace glint::accel {
+namespace glint::rt {
 namespace {
 
 constexpr size_t kPacket = 8;
@@ -24,11 +24,11 @@ constexpr size_t kRayGrain = 64;
 
 // Lanes past the end of the batch are switched off in `valid` (and filled with a copy of the last
 // ray, so Embree never reads uninitialised floats).
-void set_packet(std::span<const Ray> rays, size_t first, int* valid, RTCRayHit8& packet) {
+void set_packet(std::span<const accel::Ray> rays, size_t first, int* valid, RTCRayHit8& packet) {
   for (size_t k = 0; k < kPacket; ++k) {
     const size_t i = first + k;
     valid[k] = i < rays.size() ? -1 : 0;
-    const Ray& ray = rays[std::min(i, rays.size() - 1)];
+    const accel::Ray& ray = rays[std::min(i, rays.size() - 1)];
     packet.ray.org_x[k] = ray.origin.x;
     packet.ray.org_y[k] = ray.origin.y;
     packet.ray.org_z[k] = ray.origin.z;
@@ -48,8 +48,8 @@ void set_packet(std::span<const Ray> rays, size_t first, int* valid, RTCRayHit8&
 
 }  // namespace
 
-void EmbreeScene::trace_closest(std::span<const Ray> rays, std::span<Hit> hits) const {
-  check_batch_sizes(rays.size(), hits.size());
+void EmbreeScene::trace_closest(std::span<const accel::Ray> rays, std::span<accel::Hit> hits) const {
+  accel::check_batch_sizes(rays.size(), hits.size());
   const size_t packets = (rays.size() + kPacket - 1) / kPacket;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, packets, kPacketGrain), [&](const auto& range) {
     RTCIntersectContext context;
@@ -63,7 +63,7 @@ void EmbreeScene::trace_closest(std::span<const Ray> rays, std::span<Hit> hits) 
       const size_t end = std::min(first + kPacket, rays.size());
       for (size_t i = first; i != end; ++i) {
         const size_t k = i - first;
-        Hit hit;
+        accel::Hit hit;
         if (packet.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID) {
           hit.t = packet.ray.tfar[k];
           hit.instance = 0;
@@ -78,8 +78,8 @@ void EmbreeScene::trace_closest(std::span<const Ray> rays, std::span<Hit> hits) 
   device_.check("trace_closest");
 }
 
-void EmbreeScene::trace_any(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
-  check_batch_sizes(rays.size(), occluded.size());
+void EmbreeScene::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t> occluded) const {
+  accel::check_batch_sizes(rays.size(), occluded.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), kRayGrain), [&](const auto& range) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -88,10 +88,10 @@ void EmbreeScene::trace_any(std::span<const Ray> rays, std::span<uint8_t> occlud
       ray = embree_ray(rays[i]);
       rtcOccluded1(scene_, &context, &ray);
       // Embree marks an occluded ray by setting tfar to -infinity.
-      occluded[i] = ray.tfar == -kInfinity ? 1 : 0;
+      occluded[i] = ray.tfar == -accel::kInfinity ? 1 : 0;
     }
   });
   device_.check("trace_any");
 }
 
-}  // namespace glint::accel
+}  // namespace glint::rt
