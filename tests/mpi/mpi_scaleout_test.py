@@ -5,7 +5,8 @@ One CTest test per case (cmake/GlintMpi.cmake registers them as Mpi.<case>):
   bench_np2     mpirun -np 2 glint bench --quick: the same cells, rows (timings aside) and images
   bench_np3     -np 3, oversubscribed, every frame-times cell split into ranges of 2 frames
                 (GLINT_MPI_PIECE_FRAMES=2): the ranges joined give the same rows
-  render_np2    a 12-frame render: byte-identical PNGs, the same timings.csv and scopes.csv rows
+  render_np2    a 12-frame render: byte-identical PNGs (and video, with ffmpeg), the same timings.csv
+                and scopes.csv rows
   render_np3    the same with 3 ranks
   failed_rank   -np 3 bench (split) and -np 2 render with rank 1 made to fail
                 (GLINT_TEST_MPI_FAIL_RANK=1): reported, and the rest completes with the same results
@@ -28,7 +29,7 @@ WORK = os.environ.get("GLINT_TEST_WORK", "/tmp/glint-mpi-tests")
 
 BENCH = ["bench", "--experiment", "paper", "--quick", "--no-plot"]
 RENDER = ["render", "atrium-simple", "--frames", "0:11", "--width", "64", "--height", "36",
-          "--shadow-map-size", "64", "--profile-scopes"]
+          "--shadow-map-size", "64", "--profile-scopes"] + (["--video"] if shutil.which("ffmpeg") else [])
 
 
 def fail(message):
@@ -89,7 +90,7 @@ def same_csv(a, b):
         fail(f"{b}: rows differ from the one-process run's {a}")
 
 
-def same_png(a, b):
+def same_bytes(a, b):
     if not filecmp.cmp(a, b, shallow=False):
         fail(f"{b}: not byte-identical to the one-process run's {a}")
 
@@ -103,7 +104,7 @@ def check_bench(one, shared, ranks):
         if name.endswith(".csv"):
             same_csv(os.path.join(one, name), os.path.join(shared, name))
         elif name.endswith(".png"):
-            same_png(os.path.join(one, name), os.path.join(shared, name))
+            same_bytes(os.path.join(one, name), os.path.join(shared, name))
     a = json.load(open(os.path.join(one, "summary.json")))
     b = json.load(open(os.path.join(shared, "summary.json")))
     keys = ("id", "status", "reason", "frames")
@@ -128,8 +129,8 @@ def check_render(one, shared, ranks):
     if expected != got:
         fail(f"{shared} holds other files than one process's: missing {sorted(expected - got)}, extra {sorted(got - expected)}")
     for name in sorted(expected):
-        if name.endswith(".png"):
-            same_png(os.path.join(one, name), os.path.join(shared, name))
+        if name.endswith(".png") or name.endswith(".mp4"):  # the video is made from the same PNGs, in order
+            same_bytes(os.path.join(one, name), os.path.join(shared, name))
     for name in ("timings.csv", "scopes.csv"):
         same_csv(os.path.join(one, name), os.path.join(shared, name))
     a = json.load(open(os.path.join(one, "run.json")))

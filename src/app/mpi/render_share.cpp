@@ -128,6 +128,11 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
     }
     return result;
   };
+  // Started before the frames, as one process starts it (ffmpeg missing is one line before any frame);
+  // rank 0 feeds it the PNGs in frame order once every piece is done.
+  std::optional<FfmpegVideoWriter> video;
+  if (options.video && world().lead())
+    video.emplace(out.path() / "walkthrough.mp4", options.width, options.height, scene.walkthrough.frames_per_second);
   WorkShareOptions share_options;
   share_options.errors_retire_rank = true;  // a frame that failed leaves the loop in no state to go on
   const std::optional<ShareResult> shared =
@@ -187,11 +192,9 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
     const auto [first, end] = piece_range(piece);
     pieces.push_back({{"frames", {frames[first], frames[end - 1]}}, {"rank", result["rank"]}});
   }
-  if (options.video) {
-    FfmpegVideoWriter video(out.path() / "walkthrough.mp4", options.width, options.height,
-                            scene.walkthrough.frames_per_second);
-    for (const int frame : frames) video.add_frame(read_png(out.frame_path(frame)));
-    video.finish();
+  if (video) {
+    for (const int frame : frames) video->add_frame(read_png(out.frame_path(frame)));
+    video->finish();
   }
   timings.commit();
   if (scopes) scopes->commit();
