@@ -47,7 +47,10 @@ def run(command, env=None):
 def mpirun(ranks, args, out, extra_env=None):
     # As root (containers, CI) Open MPI wants both variables; --oversubscribe lets 3 ranks share 2
     # cores; --bind-to none keeps each rank's threads (llvmpipe, TBB) free to use every core.
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", **(extra_env or {}))
+    # Containers often forbid the cross-process reads Open MPI uses for large messages on one host
+    # (process_vm_readv); copying through shared memory works everywhere.
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_btl_vader_single_copy_mechanism="none", **(extra_env or {}))
     if os.path.exists(out):
         shutil.rmtree(out)
     return run([MPIRUN, "-np", str(ranks), "--oversubscribe", "--bind-to", "none", GLINT] + args + ["--out", out], env)
