@@ -3,7 +3,7 @@
 // a-trous iteration (5 x 5 B3-spline taps `step` pixels apart; the denoiser runs steps 1, 2, 4).
 // The weight of tap q for pixel p is
 //   h(i) h(j)                                            the B3-spline kernel
-//   x exp(-|offset|^2 / (2 s^2)),  s = max_sigma x min(roughness_p / 0.5, 1) / sqrt(history length_p)
+//   x exp(-|offset|^2 / (2 s^2)),  s = max_sigma x sqrt(min(roughness_p / 0.5, 1) / history length_p)
 //                                                        footprint of the lobe: none for a mirror,
 //                                                        shrinking as the history converges
 //   x exp(-|n_p . (P_q - P_p)| / (depth_sigma x |P_p - camera|))   same plane (depth edges)
@@ -46,7 +46,7 @@ void main() {
   const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
   const vec3 normal = normalize(normal_roughness.xyz);
   const float roughness = glossy_roughness(normal_roughness.w);
-  const float sigma = max_sigma * min(roughness / 0.5, 1.0) / sqrt(max(centre.a, 1.0));
+  const float sigma = max_sigma * sqrt(min(roughness / 0.5, 1.0)) / sqrt(max(centre.a, 1.0));
   if (sigma <= 0.0) {
     imageStore(filtered, pixel, centre);
     return;

@@ -5,7 +5,8 @@
 //              include/reprojection.glsl), bilinear over the taps that are the same surface
 //              (plane distance and normal tests); none: disoccluded, the history restarts
 //   previous is clamped to mean +- clamp_sigma x deviation of c over the 3x3 neighbourhood
-//   n        = min(history length + 1, max_history),   out = mix(previous, c, 1 / n)
+//   n        = min(history length + 1, 1 + (max_history - 1) min(roughness / 0.3, 1)^2)
+//   out      = mix(previous, c, 1 / n)   (near-mirrors keep little history: see below)
 // Mirrors (roughness 0) and pixels without history pass c through (n = 1). Output: rgb, a = n
 // (0 for non-reflective pixels); motion: the previous position (pixels), (-1, -1) when disoccluded.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -103,6 +104,10 @@ void main() {
   const vec3 deviation = sqrt(max(square / count - mean * mean, vec3(0.0)));
   const vec3 clamped = clamp(history_value.rgb, mean - clamp_sigma * deviation, mean + clamp_sigma * deviation);
 
-  const float n = min(history_value.a + 1.0, max_history);
+  // A sharp reflection moves over its surface when the camera moves, so the surface's motion vector
+  // reprojects it to the wrong place: near-mirrors keep little history (their samples are nearly
+  // noise-free anyway), a lobe of roughness >= 0.3 the full max_history.
+  const float sharpness = clamp(glossy_roughness(normal_roughness.w) / 0.3, 0.0, 1.0);
+  const float n = min(history_value.a + 1.0, 1.0 + (max_history - 1.0) * sharpness * sharpness);
   imageStore(accumulated, pixel, vec4(mix(clamped, c, 1.0 / n), n));
 }
