@@ -10,6 +10,7 @@
 //   x max(n_p . n_q, 0)^normal_power                     same orientation (normal edges)
 //   x exp(-|roughness_p - roughness_q| / roughness_sigma) same lobe width
 // over reflective taps only, normalised (a constant stays constant). a (history length) passes through.
+// An iteration whose step is >= 3 s passes the pixel through (its taps would weigh < 1 %).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
@@ -47,7 +48,9 @@ void main() {
   const vec3 normal = normalize(normal_roughness.xyz);
   const float roughness = glossy_roughness(normal_roughness.w);
   const float sigma = max_sigma * sqrt(min(roughness / 0.5, 1.0)) / sqrt(max(centre.a, 1.0));
-  if (sigma <= 0.0) {
+  // Taps 3 sigma or more away weigh less than exp(-4.5) x the centre's kernel weight: an iteration
+  // whose step is that long is skipped (most of the polished floor skips steps 2 and 4).
+  if (sigma <= 0.0 || float(step) >= 3.0 * sigma) {
     imageStore(filtered, pixel, centre);
     return;
   }
