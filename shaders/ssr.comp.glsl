@@ -1,13 +1,17 @@
 #version 450 core
 // Screen-space reflections (SsrPass, docs/ssr.md). One invocation per pixel: reflect the view ray
-// about the G-buffer normal, march it in screen space with McGuire & Mara's perspective-correct DDA
-// (JCGT 2014: clip to the near plane, project both ends, interpolate Q = view point / w and k = 1/w
-// linearly in screen space, step along the major axis), refine the hit interval by bisection, and
-// keep the hit only if it passes every trust test; otherwise mark the pixel for ray tracing.
-// Depths here are positive linear view depths (distance in front of the camera along -z).
+// about the G-buffer normal, follow it as a perspective-correct screen-space line (McGuire & Mara,
+// JCGT 2014: Q = view point / w and k = 1 / w are linear in screen space, so the ray's depth at any
+// point of the line is -Q.z / k exactly) cell by cell through the depth pyramid (DepthPyramidPass:
+// per texel the [min, max] view depth of the surfaces under it): a level up after a cell the ray
+// crosses in front of everything, a level down where its depth range meets the cell's, a hit at
+// level 0 where it meets the pixel's surface. The hit is kept only if it passes every trust test;
+// otherwise the pixel is marked for ray tracing. Depths are positive linear view depths, and every
+// depth tolerance is a fraction of one, so nothing depends on the scene's scale or position.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
+#include "include/pixel_plane.glsl"
 #include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
@@ -16,41 +20,28 @@ layout(binding = 2, rgba16f) uniform readonly image2D world_normal;
 layout(binding = 3, rgba16f) uniform readonly image2D lit;
 layout(binding = 4, rgba16f) uniform writeonly image2D reflection;
 layout(binding = 5, r8ui) uniform writeonly uimage2D failure_mask;
+layout(binding = 0) uniform sampler2D depth_pyramid;  // rg = min, max view depth; texelFetch only
 
 // [0] reflective pixels, [1] failed pixels (render_targets.h kPixelCountersBinding).
 layout(std430, binding = 0) buffer PixelCounters { uint pixel_counters[2]; };
 
 uniform int max_steps;
-uniform float stride;
-uniform int refinement_steps;
-uniform int jitter;
 uniform float thickness;
 uniform float max_distance;
 uniform float confidence_threshold;
 uniform float edge_fade;
-uniform float self_hit_distance;
+uniform float min_hit_cosine;
+uniform float silhouette_footprints;
+uniform float max_screen_fraction;
+uniform float empty_behind;
+uniform int pyramid_levels;
 
 const uint kNotReflective = 0u;
 const uint kHit = 1u;
 const uint kFailed = 2u;
-const float kBackgroundDepth = 3.0e38;  // background is infinitely far: no ray is ever behind it
+const float kHuge = 3.0e38;
 
 ivec2 screen_size;
-
-// Positive linear view depth of the surface seen at `pixel`.
-float scene_depth(ivec2 pixel) {
-  const vec4 position = imageLoad(world_position, pixel);
-  if (position.w == 0.0) return kBackgroundDepth;
-  return -(view * vec4(position.xyz, 1.0)).z;
-}
-
-// A per-pixel, per-frame number in [0, 1) (PCG-style integer hash), so jitter decorrelates pixels
-// and frames without a noise texture.
-float hash01(uvec3 v) {
-  uint h = v.x * 1664525u + v.y * 22695477u + v.z * 2891336453u + 1013904223u;
-  h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
-  return float(h >> 8) * (1.0 / 16777216.0);
-}
 
 float edge_term(vec2 pixel_center) {
   if (edge_fade <= 0.0) return 1.0;
@@ -60,133 +51,148 @@ float edge_term(vec2 pixel_center) {
   return fade.x * fade.y;
 }
 
-// The march state along the screen-space line: s counts strides from the origin.
+// The ray as a screen-space line p(t) = p0 + t * dp, t in [0, 1] over the clipped ray.
 struct Line {
-  vec2 p0, dp;   // screen position (major axis in x when permuted) and its step
-  float q0z, dqz; // homogeneous view z (Q.z = z / w) and its step
-  float k0, dk;   // 1 / w and its step
-  bool permute;
+  vec2 p0, dp;
+  float q0z, dqz;  // homogeneous view z (Q.z = z / w) and its change over the line
+  float k0, dk;    // 1 / w and its change
 };
 
-vec2 line_pixel_position(Line line, float s) {
-  const vec2 p = line.p0 + line.dp * s;
-  return line.permute ? p.yx : p;
-}
-float line_depth(Line line, float s) { return -(line.q0z + line.dqz * s) / (line.k0 + line.dk * s); }
+float line_depth(Line line, float t) { return -(line.q0z + line.dqz * t) / (line.k0 + line.dk * t); }
 
-// The ray's depth range over one pixel along the major axis, centred on s.
-vec2 pixel_span(Line line, float s) {
-  const float half_pixel = 0.5 / stride;
-  const float a = line_depth(line, s - half_pixel), b = line_depth(line, s + half_pixel);
-  return vec2(min(a, b), max(a, b));
+// The line parameter where the line leaves the axis-aligned box [lo, hi] it is inside of.
+float exit_parameter(Line line, vec2 lo, vec2 hi, vec2 inv_dp) {
+  const vec2 bound = mix(lo, hi, greaterThanEqual(line.dp, vec2(0.0)));
+  const vec2 t = (bound - line.p0) * inv_dp;
+  return min(t.x, t.y);
 }
 
-// How far a surface depth lies outside a depth range (0 when inside).
-float depth_gap(vec2 span, float surface) { return max(max(span.x - surface, surface - span.y), 0.0); }
+// Largest distance of a 4-neighbour of `pixel` from the plane through `p` with normal `n` (world
+// units; background neighbours are infinitely far): large on a silhouette, ~0 inside a surface.
+float neighbour_plane_distance(ivec2 pixel, vec3 p, vec3 n) {
+  float largest = 0.0;
+  const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+  for (int i = 0; i < 4; ++i) {
+    const ivec2 q = clamp(pixel + offsets[i], ivec2(0), screen_size - 1);
+    const vec4 neighbour = imageLoad(world_position, q);
+    largest = max(largest, neighbour.w == 0.0 ? kHuge : abs(dot(neighbour.xyz - p, n)));
+  }
+  return largest;
+}
 
-bool on_screen(vec2 p) { return all(greaterThanEqual(p, vec2(0.0))) && all(lessThan(p, vec2(screen_size))); }
-
-// Marches one reflective pixel; writes the reflection it trusts into `result`.
+// Traces one reflective pixel; writes the reflection it trusts into `result`.
 uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   result = vec4(0.0);
   const vec3 view_dir = normalize(origin_ws - camera_position.xyz);
   const vec3 ray_ws = normalize(reflect(view_dir, normal_ws));
 
-  // View space, clipped to the near plane (a ray towards the camera ends there: what lies behind
-  // the camera is not on screen, so such rays fail by running out of line).
+  // View space, clipped to the near plane (what lies behind the camera is not on screen: such rays
+  // fail by running out of line) and to the far plane.
   const vec3 origin_vs = (view * vec4(origin_ws, 1.0)).xyz;
   const vec3 ray_vs = mat3(view) * ray_ws;
-  const float near_z = -near_far.x;
-  float ray_length = max_distance;
-  if (origin_vs.z + ray_vs.z * ray_length > near_z) ray_length = (near_z - origin_vs.z) / ray_vs.z;
-  if (!(ray_length > 0.0)) return kFailed;  // a surface at or before the near plane: nothing to march
+  float ray_length = near_far.y;
+  if (ray_vs.z > 0.0) ray_length = min(ray_length, (-near_far.x - origin_vs.z) / ray_vs.z);
+  if (ray_vs.z < 0.0) ray_length = min(ray_length, (-near_far.y - origin_vs.z) / ray_vs.z);
+  if (max_distance > 0.0) ray_length = min(ray_length, max_distance);
+  if (!(ray_length > 0.0)) return kFailed;  // a surface at or before the near plane: nothing to trace
   const vec3 end_vs = origin_vs + ray_vs * ray_length;
 
   const vec4 h0 = projection * vec4(origin_vs, 1.0);
   const vec4 h1 = projection * vec4(end_vs, 1.0);
-  const float k0 = 1.0 / h0.w, k1 = 1.0 / h1.w;
-  const float q0z = origin_vs.z * k0, q1z = end_vs.z * k1;
-  vec2 p0 = (h0.xy * k0 * 0.5 + 0.5) * vec2(screen_size);
-  vec2 p1 = (h1.xy * k1 * 0.5 + 0.5) * vec2(screen_size);
-  // A ray along the view direction projects to a point; give the line a length to step along.
-  if (dot(p1 - p0, p1 - p0) < 1e-4) p1 += vec2(0.01);
-
   Line line;
-  vec2 delta = p1 - p0;
-  line.permute = abs(delta.x) < abs(delta.y);
-  if (line.permute) { delta = delta.yx; p0 = p0.yx; }
-  const float step_dir = sign(delta.x);
-  const float inv_dx = step_dir / delta.x;  // one pixel along the major axis
-  line.p0 = p0;
-  line.dp = vec2(step_dir, delta.y * inv_dx) * stride;
-  line.q0z = q0z;
-  line.dqz = (q1z - q0z) * inv_dx * stride;
-  line.k0 = k0;
-  line.dk = (k1 - k0) * inv_dx * stride;
-  const float last_s = abs(delta.x) / stride;  // the end of the clipped ray
+  line.k0 = 1.0 / h0.w;
+  line.dk = 1.0 / h1.w - line.k0;
+  line.q0z = origin_vs.z * line.k0;
+  line.dqz = end_vs.z / h1.w - line.q0z;
+  line.p0 = (h0.xy * line.k0 * 0.5 + 0.5) * vec2(screen_size);
+  line.dp = (h1.xy / h1.w * 0.5 + 0.5) * vec2(screen_size) - line.p0;
+  // A ray along the view direction projects to a point; give the line a direction to walk.
+  if (dot(line.dp, line.dp) < 1e-6) line.dp = vec2(1e-3);
+  const vec2 inv_dp = 1.0 / mix(line.dp, vec2(1e-12), equal(line.dp, vec2(0.0)));
+  // The line ends at its clipped end or where it leaves the screen, whichever comes first.
+  const float t_end = min(1.0, exit_parameter(line, vec2(0.0), vec2(screen_size), inv_dp));
+  // A nudge of a hundredth of a pixel along the major axis puts a cell's exit point into the next cell.
+  const float nudge = 0.01 / max(abs(line.dp.x), abs(line.dp.y));
 
-  // Start one stride away (the origin pixel would hit itself), plus the jitter.
-  const float start = 1.0 + (jitter != 0 ? hash01(uvec3(pixel, uint(viewport.z))) : 0.0);
-  float previous_s = 0.0;
-  float previous_depth = -origin_vs.z;
-  float hit_s = -1.0;
+  // Start where the line leaves the origin's pixel: the surface never reflects itself there.
+  float t = exit_parameter(line, vec2(pixel), vec2(pixel + 1), inv_dp) + nudge;
+  int level = 0;
+  const int top_level = pyramid_levels - 1;
+  bool found = false;
+  ivec2 hit_pixel = pixel;
+  float hit_gap = 0.0;  // how far behind the hit pixel's surface the ray passed (view depth)
   for (int i = 0; i < max_steps; ++i) {
-    const float s = start + float(i);
-    if (s > last_s) return kFailed;  // out of distance (or clipped by the near plane)
-    const vec2 p = line_pixel_position(line, s);
-    if (!on_screen(p)) return kFailed;
-    // The ray's depth range over this step: from where the last step's range ended to half a step
-    // ahead, so that a surface between two samples is not skipped.
-    const float ahead_depth = line_depth(line, s + 0.5);
-    const float ray_min = min(previous_depth, ahead_depth);
-    const float ray_max = max(previous_depth, ahead_depth);
-    previous_depth = ahead_depth;
-    const float surface = scene_depth(ivec2(p));
-    if (ray_max >= surface && ray_min <= surface + thickness) {
-      hit_s = s;
-      break;
+    if (t >= t_end) return kFailed;  // off screen, or the end of the clipped ray
+    const vec2 p = line.p0 + line.dp * t;
+    const ivec2 at = clamp(ivec2(floor(p)), ivec2(0), screen_size - 1);
+    const ivec2 cell = at >> level;
+    const ivec2 level_size = max(screen_size >> level, ivec2(1));
+    const float cell_size = float(1 << level);
+    const float t_exit = min(exit_parameter(line, vec2(cell) * cell_size, vec2(cell + 1) * cell_size, inv_dp), t_end);
+    const float za = line_depth(line, t), zb = line_depth(line, t_exit);
+    const vec2 ray = vec2(min(za, zb), max(za, zb));
+    const vec2 surface = texelFetch(depth_pyramid, min(cell, level_size - 1), level).rg;
+    if (ray.y < surface.x) {  // in front of every surface under the cell: empty space
+      t = t_exit + nudge;
+      level = min(level + 1, top_level);
+      continue;
     }
-    previous_s = s;
-  }
-  if (hit_s < 0.0) return kFailed;  // out of steps
-
-  // Bisection on the last interval for the first position whose one-pixel depth range reaches a
-  // surface (within the thickness); with strides > 1 this finds the pixel the stride skipped over.
-  // The step's depth range reached half a step ahead, so the crossing may lie up to there.
-  float lo = previous_s, hi = min(hit_s + 0.5, last_s);
-  bool refined = false;
-  for (int i = 0; i < refinement_steps; ++i) {
-    const float mid = 0.5 * (lo + hi);
-    const vec2 mid_p = line_pixel_position(line, mid);
-    const ivec2 mid_pixel = ivec2(mid_p);
-    const vec2 span = pixel_span(line, mid);
-    const float surface = scene_depth(mid_pixel);
-    // The origin's own pixel is never a hit (any point of the ray beyond it is "behind" it); the
-    // half step ahead may reach past the border.
-    if (on_screen(mid_p) && mid_pixel != pixel && span.y >= surface && span.x <= surface + thickness) {
-      hi = mid;
-      refined = true;
-    } else {
-      lo = mid;
+    if (ray.x > surface.y * (1.0 + thickness)) {
+      // Behind every surface under the cell: hidden from the camera. Close behind a surface the ray
+      // is probably inside what it went behind, and what it meets there is unknown: it fails. Far
+      // behind, that space is taken to be empty and the ray walks on.
+      if (ray.x <= surface.y * (1.0 + empty_behind)) return kFailed;
+      t = t_exit + nudge;
+      level = min(level + 1, top_level);
+      continue;
     }
+    if (level > 0) {
+      --level;
+      continue;
+    }
+    // One pixel whose depth range the ray meets: compare the ray with the pixel's own plane where
+    // the ray enters and leaves the pixel (a range test alone would take a ray skimming over a
+    // receding surface for a hit).
+    const vec4 cell_position = imageLoad(world_position, at);
+    const vec3 plane_p = (view * vec4(cell_position.xyz, 1.0)).xyz;
+    const vec3 plane_n = mat3(view) * imageLoad(world_normal, at).xyz;
+    const float behind_a = za - pixel_plane_depth(plane_p, plane_n, line.p0 + line.dp * t, vec2(screen_size));
+    const float behind_b = zb - pixel_plane_depth(plane_p, plane_n, line.p0 + line.dp * t_exit, vec2(screen_size));
+    const float tolerance = thickness * -plane_p.z;
+    if (max(behind_a, behind_b) < 0.0 || min(behind_a, behind_b) > tolerance) {
+      // In front of the surface all through the pixel, or hidden behind it all through (failing
+      // close behind it, as above).
+      const float least_behind = min(behind_a, behind_b);
+      if (least_behind > tolerance && least_behind <= empty_behind * -plane_p.z) return kFailed;
+      t = t_exit + nudge;
+      level = min(level + 1, top_level);
+      continue;
+    }
+    found = true;
+    hit_pixel = at;
+    hit_gap = max(min(behind_a, behind_b), 0.0);  // 0 where the ray crosses the surface inside the pixel
+    break;
   }
-  if (!refined) hi = hit_s;  // no finer position found: keep the step that hit
-  const vec2 hit_p = line_pixel_position(line, hi);
-  const ivec2 hit_pixel = ivec2(hit_p);
+  if (!found) return kFailed;  // out of steps
 
   // Trust tests (docs/ssr.md "Failure rules").
   const vec4 hit_position = imageLoad(world_position, hit_pixel);
-  if (hit_position.w == 0.0) return kFailed;  // background
-  const float distance_ws = length(hit_position.xyz - origin_ws);
-  if (hit_pixel == pixel || distance_ws < self_hit_distance) return kFailed;  // self-intersection
-  const vec3 hit_normal = imageLoad(world_normal, hit_pixel).xyz;
-  if (dot(hit_normal, ray_ws) > 0.0) return kFailed;  // back face
-  const float depth_difference = depth_gap(pixel_span(line, hi), scene_depth(hit_pixel));
-  const float confidence =
-      (1.0 - smoothstep(0.0, thickness, depth_difference)) * edge_term(vec2(hit_pixel) + 0.5);
+  if (hit_position.w == 0.0 || hit_pixel == pixel) return kFailed;  // background, or itself
+  const vec3 hit_normal = normalize(imageLoad(world_normal, hit_pixel).xyz);
+  const float facing = -dot(hit_normal, ray_ws);
+  if (facing <= 0.0) return kFailed;  // back face (the G-buffer normal is never flipped)
+  const float hit_depth = -(view * vec4(hit_position.xyz, 1.0)).z;
+  const float footprint = hit_depth * 2.0 / (projection[1][1] * float(screen_size.y));
+  const float off_plane = neighbour_plane_distance(hit_pixel, hit_position.xyz, hit_normal) / footprint;
+  const vec2 hit_center = vec2(hit_pixel) + 0.5;
+  const float screen_fraction = length(hit_center - line.p0) / length(vec2(screen_size));
+  const float confidence = (1.0 - smoothstep(0.0, thickness * hit_depth, hit_gap)) * edge_term(hit_center) *
+                           smoothstep(0.0, min_hit_cosine, facing) *
+                           (1.0 - smoothstep(0.5 * silhouette_footprints, silhouette_footprints, off_plane)) *
+                           (1.0 - smoothstep(0.75 * max_screen_fraction, max_screen_fraction, screen_fraction));
   if (confidence < confidence_threshold) return kFailed;
 
-  result = vec4(imageLoad(lit, hit_pixel).rgb, distance_ws);
+  result = vec4(imageLoad(lit, hit_pixel).rgb, length(hit_position.xyz - origin_ws));
   return kHit;
 }
 

@@ -323,7 +323,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_option("--ssr-max-steps", options.ssr_max_steps, "Most screen-space march steps per pixel")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
-  command->add_option("--ssr-thickness", options.ssr_thickness, "Assumed surface thickness for SSR hits (world units)")
+  command->add_option("--ssr-thickness", options.ssr_thickness,
+                      "How far behind a surface an SSR ray still meets it, as a fraction of its view depth (0..1]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--ssr-confidence", options.ssr_confidence,

@@ -54,7 +54,7 @@ struct RenderOptions {
   std::string primary = "raster";  // raster|rt (render::PrimaryVisibility; rt only with visibility)
   std::string shadows = "rt";      // cube|rt|hybrid (render::ShadowMethod)
   int ssr_max_steps = 256;
-  float ssr_thickness = 0.5f;
+  float ssr_thickness = 0.01f;  // fraction of the view depth (SsrSettings::thickness)
   float ssr_confidence = 0.9f;
   // --reflections auto (render::AdaptiveSettings): rays per frame (-1: none) or milliseconds of
   // reflection work per frame (0: none), and the largest fraction of a tile's reflective pixels left

@@ -16,11 +16,13 @@ namespace {
 // Image units, as declared in ssr.comp.glsl.
 constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit = 3, kReflectionUnit = 4,
                  kFailureMaskUnit = 5;
+constexpr GLuint kPyramidUnit = 0;  // texture unit of the depth pyramid (sampler depth_pyramid)
 
 }  // namespace
 
 SsrPass::SsrPass(int width, int height, const SsrSettings& settings)
     : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})),
+      pyramid_(width, height),
       counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ssr counters") {
   set_settings(settings);
   counters_ = create_buffer(2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -31,6 +33,7 @@ void SsrPass::resize(int width, int height) {
   require_pass_size("ssr", width, height);
   reflection_ = create_texture_2d(kReflectionFormat, width, height);
   failure_mask_ = create_texture_2d(kFailureMaskFormat, width, height);
+  if (pyramid_.width() != width || pyramid_.height() != height) pyramid_.resize(width, height);
   width_ = width;
   height_ = height;
   check_gl("ssr: create outputs");
@@ -40,14 +43,14 @@ void SsrPass::set_settings(const SsrSettings& settings) {
   validate(settings);
   settings_ = settings;
   program_.set_uniform("max_steps", settings.max_steps);
-  program_.set_uniform("stride", settings.stride);
-  program_.set_uniform("refinement_steps", settings.refinement_steps);
-  program_.set_uniform("jitter", settings.jitter ? 1 : 0);
   program_.set_uniform("thickness", settings.thickness);
   program_.set_uniform("max_distance", settings.max_distance);
   program_.set_uniform("confidence_threshold", settings.confidence_threshold);
   program_.set_uniform("edge_fade", settings.edge_fade);
-  program_.set_uniform("self_hit_distance", settings.self_hit_distance);
+  program_.set_uniform("min_hit_cosine", settings.min_hit_cosine);
+  program_.set_uniform("silhouette_footprints", settings.silhouette_footprints);
+  program_.set_uniform("max_screen_fraction", settings.max_screen_fraction);
+  program_.set_uniform("empty_behind", settings.empty_behind);
 }
 
 void SsrPass::run(const SsrInputs& inputs) {
@@ -58,6 +61,9 @@ void SsrPass::run(const SsrInputs& inputs) {
   require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
   require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
   require_buffer("ssr", "frame_constants", inputs.frame_constants);
+
+  // The pyramid first: the trace reads it as a texture (unit kPyramidUnit).
+  pyramid_.run({inputs.world_position, inputs.world_normal, inputs.frame_constants});
 
   const std::array<std::uint32_t, 2> zero{0, 0};
   glNamedBufferSubData(counters_.id(), 0, sizeof(zero), zero.data());
@@ -70,6 +76,8 @@ void SsrPass::run(const SsrInputs& inputs) {
   glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
   glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
+  glBindTextureUnit(kPyramidUnit, pyramid_.texture());
+  program_.set_uniform("pyramid_levels", pyramid_.levels());
 
   dispatch_image_or_tiles(program_, tiles_, width_, height_);
   // Later passes read the outputs as images or textures, the ray-trace step reads the counters as a

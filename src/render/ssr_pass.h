@@ -1,17 +1,20 @@
 #pragma once
-// SsrPass: screen-space reflections for every reflective pixel of the G-buffer. One compute
-// dispatch marches each pixel's mirror ray through the depth of the G-buffer with McGuire & Mara's
-// perspective-correct DDA (JCGT 2014) and writes
+// SsrPass: screen-space reflections for every reflective pixel of the G-buffer. It builds the
+// depth pyramid (DepthPyramidPass: per-pixel depth ranges, min/max mip chain), then one compute
+// dispatch traces each pixel's mirror ray through it hierarchically (a perspective-correct
+// screen-space line, cell by cell, a level up over empty cells and down where the ray meets the
+// depth range) and writes
 //   reflection (kReflectionFormat): rgb = lit colour at the trusted hit, a = world distance from the
 //                                   surface to the hit; 0 where the pixel is not reflective or failed;
 //   failure mask (kFailureMaskFormat): 1 where a reflective pixel needs a ray-traced reflection;
 //   pixel counters: a 2-uint SSBO at binding kPixelCountersBinding, [0] reflective pixels and
 //                   [1] failed pixels (an SSBO with atomicAdd, one add per work group and counter,
 //                   not an atomic-counter buffer).
-// docs/ssr.md states the algorithm, the failure rules and the confidence formula.
+// docs/ssr.md states the algorithm, the thickness model, the failure rules and the confidence formula.
 #include "gl/gl_objects.h"
 #include "gl/readback_ring.h"
 #include "gl/shader_program.h"
+#include "render/depth_pyramid_pass.h"
 #include "render/ssr_settings.h"
 #include "render/tile_dispatch.h"
 
@@ -24,8 +27,9 @@
 namespace glint::render {
 
 // Inputs, all width x height in the formats of render_targets.h. The depth buffer is not needed:
-// the march takes each pixel's linear depth from the world position (exact, where a 32-bit
-// perspective depth loses precision far away) and its background flag from position.w.
+// the pyramid takes each pixel's linear depth from the world position (exact, where a 32-bit
+// perspective depth loses precision far away), its background flag from position.w and the slope
+// of its surface from the normal.
 struct SsrInputs {
   GLuint albedo_reflectivity = 0;  // kAlbedoReflectivityFormat; a = reflectivity
   GLuint world_position = 0;       // kWorldPositionFormat; w = 1 geometry, 0 background
@@ -61,6 +65,7 @@ public:
   GLuint reflection() const { return reflection_.id(); }
   GLuint failure_mask() const { return failure_mask_.id(); }
   GLuint counters_buffer() const { return counters_.id(); }
+  const DepthPyramidPass& depth_pyramid() const { return pyramid_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -75,6 +80,7 @@ public:
 
 private:
   ShaderProgram program_;
+  DepthPyramidPass pyramid_;
   SsrSettings settings_;
   int width_ = 0;
   int height_ = 0;

@@ -64,10 +64,10 @@ std::optional<SurfaceHit> mirror_hit(const SyntheticScene& scene, const SsrResul
 bool clearly_on_screen(const SyntheticScene& scene, const SsrResult& r, const SurfaceHit& hit,
                        const SsrSettings& settings) {
   const vec2 q = testing::project_to_pixels(r.constants, hit.position);
-  const float margin = settings.edge_fade * kHeight + settings.stride + 2.0f;
+  const float margin = settings.edge_fade * kHeight + 3.0f;
   if (q.x < margin || q.y < margin || q.x > kWidth - margin || q.y > kHeight - margin) return false;
-  // A stride can step over up to `stride` pixels at a silhouette.
-  const int reach = static_cast<int>(std::ceil(settings.stride)) + 1;
+  // A hit next to a silhouette may be refused (the confidence's silhouette term).
+  const int reach = 2;
   const int qx = static_cast<int>(q.x), qy = static_cast<int>(q.y);
   for (int dy = -reach; dy <= reach; ++dy)
     for (int dx = -reach; dx <= reach; ++dx)
@@ -312,8 +312,6 @@ TEST_P(SsrPassTest, HitsInTheScreenEdgeBandFailOnlyWithTheEdgeFade) {
 TEST_F(SsrPassLimits, MaxStepsAndMaxDistanceBoundTheMarch) {
   const FloorAndBox setup;
   SsrSettings few_steps;
-  few_steps.stride = 1.0f;
-  few_steps.jitter = false;
   few_steps.max_steps = 3;
   SsrSettings short_rays = few_steps;
   short_rays.max_steps = 256;
@@ -349,31 +347,30 @@ TEST_F(SsrPassLimits, MaxStepsAndMaxDistanceBoundTheMarch) {
   EXPECT_EQ(stepped.counts.failed, stepped.counts.reflective - static_cast<std::uint32_t>(stepped_hits));
 }
 
-SsrSettings fine_settings() {
+SsrSettings thin_settings() {
   SsrSettings s;
-  s.stride = 1.0f;
-  s.jitter = false;
+  s.thickness = 0.002f;
   return s;
 }
-SsrSettings coarse_settings() {
+SsrSettings walk_behind_settings() {
   SsrSettings s;
-  s.stride = 4.0f;
-  s.refinement_steps = 8;
+  s.empty_behind = s.thickness;  // every hidden ray walks on
   return s;
 }
 
-INSTANTIATE_TEST_SUITE_P(Strides, SsrPassTest, ::testing::Values(SsrSettings{}, fine_settings(), coarse_settings()),
+INSTANTIATE_TEST_SUITE_P(Variants, SsrPassTest,
+                         ::testing::Values(SsrSettings{}, thin_settings(), walk_behind_settings()),
                          [](const auto& param_info) {
                            const std::size_t i = param_info.index;
-                           return std::string(i == 0 ? "defaults" : i == 1 ? "stride1_nojitter" : "stride4");
+                           return std::string(i == 0 ? "defaults" : i == 1 ? "thin" : "walk_behind_hidden");
                          });
 
 
 
 TEST_F(SsrPassErrors, InvalidSettingsNameTheField) {
   SsrSettings s;
-  s.stride = 0.5f;
-  EXPECT_NE(glint::testing::error_of([&] { validate(s); }).find("stride"), std::string::npos);
+  s.max_steps = 0;
+  EXPECT_NE(glint::testing::error_of([&] { validate(s); }).find("max_steps"), std::string::npos);
   s = {};
   s.confidence_threshold = 1.5f;
   EXPECT_NE(glint::testing::error_of([&] { validate(s); }).find("confidence_threshold"), std::string::npos);

@@ -86,10 +86,11 @@ FrameConstants frame_constants_for(const SyntheticCamera& camera, int width, int
 vec3 primary_ray(const FrameConstants& constants, int x, int y) {
   const vec2 ndc((static_cast<float>(x) + 0.5f) / static_cast<float>(constants.viewport.x) * 2.0f - 1.0f,
                  (static_cast<float>(y) + 0.5f) / static_cast<float>(constants.viewport.y) * 2.0f - 1.0f);
-  const mat4 inverse = glm::inverse(constants.view_projection);
-  const vec4 near_point = inverse * vec4(ndc, -1.0f, 1.0f);
-  const vec4 far_point = inverse * vec4(ndc, 1.0f, 1.0f);
-  return glm::normalize(vec3(far_point) / far_point.w - vec3(near_point) / near_point.w);
+  // Through the view-space direction turned by the view's rotation (transposed: it is orthonormal),
+  // not through world points or a general inverse, which lose the direction's precision when the
+  // camera is far from the origin.
+  const vec4 far_point = constants.inverse_projection * vec4(ndc, 1.0f, 1.0f);
+  return glm::normalize(glm::transpose(glm::mat3(constants.view)) * (vec3(far_point) / far_point.w));
 }
 
 vec2 project_to_pixels(const FrameConstants& constants, vec3 world) {
