@@ -49,13 +49,15 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
       "frame",        "shadow_ms",       "gbuffer_ms", "light_ms",  "ssr_ms",            "ray_list_ms",
       "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "frame_ms", "frame_latency_ms", "deform_ms", "accel_update_ms",
       "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced",
-      "resident_mb",  "gpu_memory_used_mb"};
+      "resident_mb",  "gpu_memory_used_mb", "classify_ms", "tiles_none", "tiles_ssr_only", "tiles_ssr_fallback",
+      "tiles_rt_only", "ray_budget", "budget_factor", "rays_wanted"};
   EXPECT_EQ(csv[0], header);
   EXPECT_EQ(csv[1][0], "2100");
   EXPECT_EQ(csv[2][0], "2101");
   for (std::size_t row = 1; row < csv.size(); ++row) {
     ASSERT_EQ(csv[row].size(), header.size());
-    for (std::size_t column = 1; column < header.size() - 1; ++column)
+    // Up to resident_mb: GPU memory (NVIDIA only) and --reflections auto's columns are empty here.
+    for (std::size_t column = 1; column < 19; ++column)
       EXPECT_GE(std::stod(csv[row][column]), 0.0) << header[column];
     EXPECT_GT(std::stod(csv[row][18]), 10.0) << "a GL process holds more than 10 MiB";
     if (!csv[row][19].empty()) {
@@ -98,7 +100,7 @@ TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoIm
   EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 20u);
+  ASSERT_EQ(csv[1].size(), 28u);
   for (const int column : {4, 5, 6, 12, 13, 15, 16, 17})
     EXPECT_EQ(csv[1][column], "") << "column " << column << " (no SSR, no ray tracing)";
 }
@@ -111,7 +113,7 @@ TEST_F(RenderCli, RtModeWithEmbreeTracesEveryReflectivePixel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 20u);
+  ASSERT_EQ(csv[1].size(), 28u);
   EXPECT_EQ(csv[1][4], "") << "no SSR in rt mode";
   EXPECT_EQ(csv[1][16], "") << "no SSR failures in rt mode";
   EXPECT_GT(std::stoul(csv[1][17]), 0u);
