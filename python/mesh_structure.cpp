@@ -2,7 +2,7 @@
 
 #include "backends/registry.h"
 #include "core/error.h"
-#include "cuda/device_query.h"
+#include "rt/blas_structure.h"
 
 #include <fmt/ranges.h>
 
@@ -45,13 +45,13 @@ MeshStructure::MeshStructure(std::vector<vec3> positions, std::vector<uint32_t> 
   if (std::find(std::begin(kStructureBackends), std::end(kStructureBackends), backend) == std::end(kStructureBackends))
     fail("{}: unknown backend \"{}\" (known: {})", kSource, backend, fmt::join(kStructureBackends, ", "));
   rt::AccelOptions options;
-  options.builder = accel::parse_bvh_builder(builder);
-  if (!backends::find_backend(backend).takes_glint_builders && options.builder != accel::BvhBuilder::sah)
+  const rt::BlasStructure structure = rt::parse_blas_structure(builder);
+  options.set_structure(structure);
+  if (!backends::find_backend(backend).takes_glint_builders && rt::blas_structure_name(structure) != "sah")
     fail("{}: builder=\"{}\" applies to the cpu and cuda backends; the {} backend builds its own structures",
          kSource, builder, backend);
   scene_.validate();
-  backends::check_backend_built(backend);
-  if (backends::is_gpu_backend(backend)) require_cuda_gpu(fmt::format("{}(backend=\"{}\")", kSource, backend).c_str());
+  backends::check_backend_runnable(backend, fmt::format("{}(backend=\"{}\")", kSource, backend));
   tracer_ = backends::make_ray_tracer(backend);
   tracer_->build(scene_, options);
 }

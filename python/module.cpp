@@ -3,6 +3,7 @@
 // one frame of `glint render` as a numpy image. Every glint::Error becomes glint.Error with glint's
 // one-line message. Long calls (builds, traces, refits, renders) release the GIL.
 #include "accel/builders/builder.h"
+#include "rt/blas_structure.h"
 #include "app/render_frame_api.h"
 #include "core/error.h"
 #include "cuda/device_query.h"
@@ -140,9 +141,9 @@ PYBIND11_MODULE(glint, m) {
   py::register_exception<Error>(m, "Error", PyExc_RuntimeError).doc() =
       "A failure glint reports: its one-line message says what and where (the argument or file).";
 
+  // The --accel menu: every builder's BVH, then the SAH kd-tree (rt/blas_structure.h).
   py::list builders;
-  for (const accel::BvhBuilder builder : accel::kAllBvhBuilders)
-    builders.append(std::string(accel::builder_name(builder)));
+  for (const std::string& name : rt::blas_structure_names()) builders.append(name);
   m.attr("BUILDERS") = py::tuple(builders);
   py::list backends;
   for (const char* backend : kStructureBackends) backends.append(backend);

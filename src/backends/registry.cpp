@@ -95,9 +95,11 @@ void check_backend_built(std::string_view name) {
   if (!backend.built()) fail("the {} backend is not in this build: {}", backend.name, backend.missing_from_build);
 }
 
-void check_backend_runnable(std::string_view name) {
+void check_backend_runnable(std::string_view name, std::string_view request) {
   check_backend_built(name);
-  if (is_gpu_backend(name)) require_cuda_gpu(("--backend " + std::string(name)).c_str());
+  if (!is_gpu_backend(name)) return;
+  const std::string what = request.empty() ? "--backend " + std::string(name) : std::string(request);
+  require_cuda_gpu(what.c_str());
 }
 
 std::unique_ptr<rt::RayTracer> make_ray_tracer(std::string_view name) {

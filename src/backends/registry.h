@@ -67,10 +67,11 @@ const Backend& find_backend(std::string_view name);
 // OptiX, cuda without CUDA), or the unknown-name error; nothing otherwise. Lets a command refuse
 // before it writes anything.
 void check_backend_built(std::string_view name);
-// check_backend_built, then, for a Device::cuda backend (cuda, optix), "--backend <name> needs a CUDA
-// GPU: <why>" when this machine has no usable one: whether `name` can run here, checked before a
-// command (render, the Python module's render, the viewer's settings) builds or writes anything.
-void check_backend_runnable(std::string_view name);
+// check_backend_built, then, for a Device::cuda backend (cuda, optix), "<request> needs a CUDA GPU:
+// <why>" when this machine has no usable one: whether `name` can run here, checked before a command
+// (render, the Python module, the viewer's settings) builds or writes anything. `request` names what
+// asked for it in the caller's terms; empty: "--backend <name>".
+void check_backend_runnable(std::string_view name, std::string_view request = {});
 // A new tracer of backend `name`: check_backend_built, then its factory.
 std::unique_ptr<rt::RayTracer> make_ray_tracer(std::string_view name);
 // True for the backends that trace on a CUDA GPU through rt::DeviceTracing (Device::cuda: cuda,

@@ -17,7 +17,7 @@ BlasStructure parse_blas_structure(std::string_view name) {
     if (accel::builder_name(builder) == name) return {BlasKind::bvh, builder};
   std::string known;
   for (const std::string& known_name : blas_structure_names()) known += (known.empty() ? "" : ", ") + known_name;
-  fail("unknown acceleration structure '{}' (known: {})", name, known);
+  fail("unknown acceleration structure \"{}\" (known: {})", name, known);
 }
 
 std::string_view blas_structure_name(const BlasStructure& structure) {

@@ -67,7 +67,7 @@ def test_no_triangles(mesh):
 
 def test_unknown_builder_and_backend(mesh):
     vertices, indices = mesh
-    with raises(r'unknown BVH builder "bvh9" \(known: none, median, sah'):
+    with raises(r'unknown acceleration structure "bvh9" \(known: none, median, sah, sbvh, lbvh, trbvh, ploc, kdtree\)'):
         glint.Structure(vertices, indices, builder="bvh9")
     with raises(r"^glint.Structure: unknown backend \"gpu\" \(known: cpu, embree, cuda, optix\)$"):
         glint.Structure(vertices, indices, backend="gpu")
@@ -117,9 +117,11 @@ def test_failed_refit_keeps_the_structure(mesh, rng):
     np.testing.assert_array_equal(after["t"], before["t"])
 
 
-def test_sbvh_cannot_refit(mesh):
+@pytest.mark.parametrize("builder", ["sbvh", "kdtree"])
+def test_unrefittable_structures_say_so_and_rebuild(mesh, builder):
     vertices, indices = mesh
-    structure = glint.Structure(vertices, indices, builder="sbvh")
-    with pytest.raises(glint.Error, match="refit"):
+    structure = glint.Structure(vertices, indices, builder=builder)
+    with pytest.raises(glint.Error, match="refit") as raised:
         structure.refit(vertices)
+    assert "\n" not in str(raised.value)
     structure.refit(vertices, policy="rebuild")  # rebuilding is always possible

@@ -10,7 +10,7 @@ CPU_CASES = [("cpu", builder) for builder in glint.BUILDERS] + [("embree", "sah"
 
 
 def test_builders_and_backends_are_listed():
-    assert set(glint.BUILDERS) == {"none", "median", "sah", "sbvh", "lbvh", "trbvh", "ploc"}
+    assert set(glint.BUILDERS) == {"none", "median", "sah", "sbvh", "lbvh", "trbvh", "ploc", "kdtree"}
     assert glint.BACKENDS == ("cpu", "embree", "cuda", "optix")
 
 
@@ -78,7 +78,7 @@ def moved(vertices, rng):
     return (vertices + wave + rng.uniform(-0.05, 0.05, vertices.shape)).astype(np.float32)
 
 
-@pytest.mark.parametrize("backend,builder", [c for c in CPU_CASES if c[1] != "sbvh"])
+@pytest.mark.parametrize("backend,builder", [c for c in CPU_CASES if c[1] not in ("sbvh", "kdtree")])
 def test_refit_follows_moved_vertices(rng, backend, builder):
     vertices, indices = random_triangles(rng)
     origins, directions = random_rays(rng)

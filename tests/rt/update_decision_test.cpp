@@ -56,7 +56,7 @@ TEST(BlasStructureNames, EveryBuilderThenKdTreeRoundTrip) {
   EXPECT_EQ(parse_blas_structure("kdtree").kind, BlasKind::kdtree);
   EXPECT_EQ(parse_blas_structure("ploc").builder, accel::BvhBuilder::ploc);
   const std::string error = testing::error_of([] { (void)parse_blas_structure("octree"); });
-  EXPECT_NE(error.find("'octree'"), std::string::npos) << error;
+  EXPECT_NE(error.find("\"octree\""), std::string::npos) << error;
   EXPECT_NE(error.find("kdtree"), std::string::npos) << error;
 }
 
