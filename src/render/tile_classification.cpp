@@ -12,8 +12,10 @@ bool known_enough(const TileEvidence& tile, const TileThresholds& thresholds) {
          static_cast<float>(tile.known) >= thresholds.min_known_fraction * static_cast<float>(tile.reflective);
 }
 
+// In steps of 2^-16, by an integer division: the GLSL twin computes the same bits, where a float
+// division would not (GLSL allows 2.5 ulp; NVIDIA's differed from the host's at 3/30).
 float failure_rate(const TileEvidence& tile) {
-  return static_cast<float>(tile.failed_known) / static_cast<float>(tile.known);
+  return static_cast<float>((tile.failed_known * 65536u) / tile.known) / 65536.0f;
 }
 
 double tile_rays(const TileEvidence& tile, TileClass tile_class, float unknown_failure_rate,
