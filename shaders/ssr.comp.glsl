@@ -11,7 +11,6 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
-#include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 #include "include/pixel_plane.glsl"
 #include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 
