@@ -11,6 +11,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
+#include "include/glossy_sampling.glsl"  // glossy reflections: the sampled direction (docs/glossy.md)
 #include "include/pixel_plane.glsl"
 #include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 
@@ -84,7 +85,11 @@ float neighbour_plane_distance(ivec2 pixel, vec3 p, vec3 n) {
 uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   result = vec4(0.0);
   const vec3 view_dir = normalize(origin_ws - camera_position.xyz);
-  const vec3 ray_ws = normalize(reflect(view_dir, normal_ws));
+  // The mirror direction, or on a glossy surface the sample the ray list traces too; surfaces
+  // rougher than the cutoff are left to the rays.
+  const float roughness = imageLoad(world_normal, pixel).w;
+  if (beyond_ssr_roughness(roughness)) return kFailed;
+  const vec3 ray_ws = pixel_reflection_direction(view_dir, normal_ws, roughness, pixel);
 
   // View space, clipped to the near plane (what lies behind the camera is not on screen: such rays
   // fail by running out of line) and to the far plane.
@@ -192,7 +197,8 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
                            (1.0 - smoothstep(0.75 * max_screen_fraction, max_screen_fraction, screen_fraction));
   if (confidence < confidence_threshold) return kFailed;
 
-  result = vec4(imageLoad(lit, hit_pixel).rgb, length(hit_position.xyz - origin_ws));
+  const float weight = reflection_weight(view_dir, normal_ws, glossy_roughness(roughness), ray_ws);  // 1 for a mirror
+  result = vec4(weight * imageLoad(lit, hit_pixel).rgb, length(hit_position.xyz - origin_ws));
   return kHit;
 }
 

@@ -76,9 +76,7 @@ TEST_F(GlossyPipelineTest, RoughnessZeroGivesTheMirrorImageBitForBit) {
     // --glossy off: every surface a mirror whatever its roughness, the reflections before glossy ones.
     const ImageRgba8 mirror = render(atrium(), settings_for(mode, false), frame).image;
     EXPECT_TRUE(glossy.pixels == mirror.pixels) << reflection_mode_name(mode) << ": " << difference(glossy, mirror);
-    // The atrium's own roughness does change the image (so the comparison above can fail); SSR
-    // marches the mirror direction until its glossy step lands (docs/glossy.md, "Not done").
-    if (mode == ReflectionMode::ssr) continue;
+    // The atrium's own roughness does change the image (so the comparison above can fail).
     const ImageRgba8 rough = render(atrium(), settings_for(mode, true), frame).image;
     EXPECT_FALSE(rough.pixels == mirror.pixels) << reflection_mode_name(mode);
   }
@@ -106,6 +104,23 @@ TEST_F(GlossyPipelineTest, RoughFloorChangesTheReflectionAndOnlyTakesEnergy) {
     for (int x = 0; x < kWidth; ++x) brighter += rough.image.at(x, y).y > mirror.image.at(x, y).y + 2;
   EXPECT_EQ(brighter, 0);
   EXPECT_LT(metrics::rmse_psnr(rough.image, mirror.image).psnr, 40.0);
+}
+
+TEST_F(GlossyPipelineTest, SsrLeavesSurfacesRougherThanTheCutoffToTheRays) {
+  Scene scene = mirror_scene();
+  scene.materials[0].roughness = 0.8f;  // the floor
+  auto counts = [&](float cutoff) {
+    FramePipelineSettings settings = settings_for(ReflectionMode::hybrid, true);
+    settings.sampling.roughness_cutoff = cutoff;
+    FramePipeline pipeline(scene, kWidth, kHeight, settings);
+    pipeline.render(camera_looking_down_the_floor());
+    return *pipeline.read_counts();
+  };
+  const SsrCounts above = counts(0.6f);
+  EXPECT_GT(above.reflective, 1000u);
+  EXPECT_EQ(above.failed, above.reflective) << "every floor pixel is left to the rays";
+  const SsrCounts below = counts(1.0f);
+  EXPECT_LT(below.failed, below.reflective) << "with the cutoff above the floor's roughness SSR marches it";
 }
 
 TEST_F(GlossyPipelineTest, DenoiserPassesMirrorsThroughLikeTheUnblurredResolve) {
