@@ -182,10 +182,6 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   return row;
 }
 
-void RenderRunRecord::MemorySamples::add(std::optional<std::uint64_t> bytes) {
-  if (!bytes) return;
-  if (!first) first = bytes;
-  last = bytes;
 void RenderRunRecord::add_row(const std::vector<std::string>& row) {
   const std::vector<std::string> header = timings_header();
   if (row.size() != header.size())
@@ -210,6 +206,10 @@ void RenderRunRecord::add_row(const std::vector<std::string>& row) {
     for (const auto& [column, value] : recorded) later_sums_[column] += value;
 }
 
+void RenderRunRecord::MemorySamples::add(std::optional<std::uint64_t> bytes) {
+  if (!bytes) return;
+  if (!first) first = bytes;
+  last = bytes;
   peak = std::max(peak.value_or(0), *bytes);
 }
 
