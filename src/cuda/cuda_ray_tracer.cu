@@ -188,6 +188,9 @@ private:
   // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
   mutable GpuTimeRing timed_{"rt cuda", kTimedSpans};
   std::optional<rt::GpuTicket> last_update_;
+  // Its GPU time once gpu_ms read it: stats() reports this after later spans reused its slot (a frame
+  // of many reflection samples traces hundreds of spans).
+  mutable std::optional<double> last_update_ms_;
 
   bool built_ = false;
   double build_ms_ = 0.0;
@@ -324,6 +327,7 @@ void CudaRayTracer::launch_instance_boxes() {
 
 void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
   last_update_ = timed([&](uint32_t*) { enqueue_update(dirty_meshes, policy); });
+  last_update_ms_.reset();
 }
 
 void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
@@ -517,6 +521,7 @@ rt::HitAndShadowTickets CudaRayTracer::trace_closest_and_hit_shadows_device(cons
 std::optional<double> CudaRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
   const std::optional<double> ms = timed_.elapsed_ms(ticket, wait);
   if (ms && host_overflow_[timed_.slot(ticket)] != 0) fail_overflow(options_.builder);
+  if (ms && ticket == last_update_) last_update_ms_ = ms;
   return ms;
 }
 
@@ -524,7 +529,9 @@ rt::RayTracerStats CudaRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = build_ms_;
-  stats.last_update_ms = last_update_ ? *timed_.elapsed_ms(*last_update_, /*wait=*/true) : 0.0;
+  if (last_update_)
+    stats.last_update_ms = timed_.holds(*last_update_) ? *timed_.elapsed_ms(*last_update_, /*wait=*/true)
+                                                       : last_update_ms_.value_or(0.0);
   stats.rebuilds = rebuilds_;
   stats.refits = refits_;
   if (!built_) return stats;

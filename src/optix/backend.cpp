@@ -41,6 +41,9 @@ struct OptixRayTracer::State {
   // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
   cuda::GpuTimeRing timed{"rt optix"};
   std::optional<rt::GpuTicket> last_update;
+  // Its GPU time once gpu_ms read it: stats() reports this after later spans reused its slot (a frame
+  // of many reflection samples traces hundreds of spans).
+  std::optional<double> last_update_ms;
 
   BuildPreference preference = BuildPreference::fast_trace;
   std::vector<MeshStructure> meshes;
@@ -180,6 +183,7 @@ void OptixRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_
   s.update_structures(dirty_meshes, policy);
   s.timed.stop(ticket, stream);
   s.last_update = ticket;
+  s.last_update_ms.reset();
   // The copies read `scene`'s vertices, which the caller may change once this returns.
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
 }
@@ -203,7 +207,9 @@ rt::RayTracerStats OptixRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = s.build_ms;
-  stats.last_update_ms = s.last_update ? *s.timed.elapsed_ms(*s.last_update, /*wait=*/true) : 0.0;
+  if (s.last_update)
+    stats.last_update_ms = s.timed.holds(*s.last_update) ? *s.timed.elapsed_ms(*s.last_update, /*wait=*/true)
+                                                         : s.last_update_ms.value_or(0.0);
   stats.rebuilds = s.rebuilds;
   stats.refits = s.refits;
   std::uint64_t bytes = s.ias.bytes();
@@ -233,7 +239,9 @@ rt::GpuTicket OptixRayTracer::trace_any_device(const accel::Ray* rays, uint32_t*
 }
 
 std::optional<double> OptixRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
-  return state_->timed.elapsed_ms(ticket, wait);
+  const std::optional<double> ms = state_->timed.elapsed_ms(ticket, wait);
+  if (ms && ticket == state_->last_update) state_->last_update_ms = ms;
+  return ms;
 }
 
 std::optional<rt::GpuTicket> OptixRayTracer::last_update() const { return state_->last_update; }
@@ -254,6 +262,7 @@ void OptixRayTracer::update_device(std::span<const uint32_t> dirty_meshes, rt::U
   s.update_structures(dirty_meshes, policy);
   s.timed.stop(ticket, s.stream.get());
   s.last_update = ticket;
+  s.last_update_ms.reset();
 }
 
 }  // namespace glint::optix
