@@ -1,7 +1,7 @@
 #pragma once
 // glint's one wall-clock timer for host work (builds, updates, traces, whole runs): started when made,
 // read in milliseconds. GPU work is timed with GPU queries or CUDA events instead (gl/gpu_timer.h,
-// cuda/gpu_time_ring.h). Header-only (glint_accel uses it too).
+// cuda/gpu_span_pool.h). Header-only (glint_accel uses it too).
 #include <chrono>
 
 namespace glint {

@@ -3,15 +3,16 @@
 #include "accel/bvh_stats.h"
 #include "core/stopwatch.h"
 #include "cuda/cuda_check.h"
+#include "cuda/cuda_span.h"
 #include "cuda/cuda_stream_events.h"
 #include "cuda/device_query.h"
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_bvh_sah.h"
 #include "cuda/gpu_kdtree.h"
 #include "cuda/gpu_mesh.h"
-#include "cuda/gpu_time_ring.h"
 #include "cuda/gpu_trace.h"
 #include "cuda/pinned_upload.h"
+#include "cuda/tracer_gpu_times.h"
 #include "rt/scene_shape.h"
 #include "rt/update_decision.h"
 
@@ -22,9 +23,6 @@
 
 namespace glint::cuda {
 namespace {
-
-// Timed device-side traces and updates kept for gpu_ms (3 frames in flight of a few each).
-constexpr std::size_t kTimedSpans = 64;
 
 bool builds_on_gpu(accel::BvhBuilder builder) {
   return builder == accel::BvhBuilder::lbvh || builder == accel::BvhBuilder::ploc;
@@ -58,6 +56,16 @@ private:
   T* data_ = nullptr;
 };
 
+// A timed device-side trace or update: its events, and its traversal stack overflow word, zeroed
+// before the work, set by a trace, and copied behind it to pinned host memory for gpu_ms to check
+// once the GPU is past the span (the pool reuses a span only after it was read or let go, and one
+// stream orders the reuse after the work).
+struct TracedSpan : CudaSpan {
+  TracedSpan() : device_overflow(1) { host_overflow.reset(1); }
+  DeviceBuffer<uint32_t> device_overflow;
+  PinnedArray<uint32_t> host_overflow;
+};
+
 class CudaRayTracer final : public rt::RayTracer, public rt::DeviceTracing {
 public:
   // make_cuda_ray_tracer checks for a GPU first (the members' CUDA stream and events need one).
@@ -83,7 +91,8 @@ public:
                                                                const uint32_t* ray_count, uint32_t capacity,
                                                                const rt::HitShadowRays& shadows) override;
   std::optional<double> gpu_ms(rt::GpuTicket ticket, bool wait) override;
-  std::optional<rt::GpuTicket> last_update() const override { return last_update_; }
+  void drop_ticket(rt::GpuTicket ticket) override { timed_.drop(ticket); }
+  std::optional<rt::GpuTicket> last_update() override { return timed_.take_last_update(); }
   vec3* device_positions(uint32_t mesh) override;
   void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 
@@ -114,7 +123,7 @@ private:
   void upload_blas_views();
   // instance_boxes_ from the BLASes' root boxes (BVH roots or kd-tree cells) and the transforms.
   void launch_instance_boxes();
-  // The update of the dirty meshes' BLASes and the TLAS, timed (last_update_).
+  // The update of the dirty meshes' BLASes and the TLAS, timed (the last update of timed_).
   void update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   void enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
   accel::TlasView tlas_view() const {
@@ -140,13 +149,10 @@ private:
     launch.occluded = occluded;
     return launch;
   }
-  // Enqueued GPU work between the events of a new ticket, given the ticket's zeroed overflow word
-  // (a trace sets it), which is copied to pinned memory behind the work for gpu_ms to check once the
-  // GPU is past the ticket.
+  // Enqueued GPU work between the events of a new span, given the span's zeroed overflow word
+  // (TracedSpan).
   template <typename Work>
   rt::GpuTicket timed(Work&& work);
-  // The ring slot's overflow word on the device (host-side traces use the word after the ring's).
-  uint32_t* device_overflow(std::size_t slot) const { return overflow_.data() + slot; }
   // Uploads host rays for trace_closest / trace_any (checked: as many as `results`, fewer than 2^32).
   uint32_t upload_host_rays(std::span<const accel::Ray> rays, std::size_t results, const char* result_name) const;
 
@@ -181,16 +187,11 @@ private:
   mutable DeviceBuffer<accel::Hit> host_hits_;
   mutable DeviceBuffer<uint32_t> host_occluded_;
   mutable std::vector<uint32_t> host_occluded_download_;
-  // Traversal stack overflow flags: one per slot of timed_, then one for host-side traces.
-  mutable DeviceBuffer<uint32_t> overflow_;
-  mutable PinnedArray<uint32_t> host_overflow_;  // per slot of timed_: copied behind its work
+  // The traversal stack overflow flag of host-side traces (device-side ones have their span's).
+  mutable DeviceBuffer<uint32_t> host_trace_overflow_;
   mutable DeviceBuffer<uint32_t> next_ray_;  // the persistent kernel's ray counter
-  // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
-  mutable GpuTimeRing timed_{"rt cuda", kTimedSpans};
-  std::optional<rt::GpuTicket> last_update_;
-  // Its GPU time once gpu_ms read it: stats() reports this after later spans reused its slot (a frame
-  // of many reflection samples traces hundreds of spans).
-  mutable std::optional<double> last_update_ms_;
+  // Device-side traces and structure updates, timed for gpu_ms; stats() reads the last update's time.
+  mutable TracerGpuTimes<TracedSpan> timed_{"rt cuda"};
 
   bool built_ = false;
   double build_ms_ = 0.0;
@@ -306,13 +307,12 @@ void CudaRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   launch_instance_boxes();
   tlas_builder_.emplace(GpuBvhBuilder::lbvh, options_.build);
   tlas_builder_->build(instance_boxes_.data(), static_cast<uint32_t>(host_instances_.size()), tlas_, stream_.get());
-  overflow_.resize(kTimedSpans + 1);
-  overflow_.fill_zero(stream_.get());
-  host_overflow_.reset(kTimedSpans);
+  host_trace_overflow_.resize(1);
+  host_trace_overflow_.fill_zero(stream_.get());
   next_ray_.resize(1);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   build_ms_ = watch.elapsed_ms();
-  last_update_.reset();
+  timed_.forget_update();
   rebuilds_ = refits_ = 0;
   built_ = true;
 }
@@ -326,8 +326,7 @@ void CudaRayTracer::launch_instance_boxes() {
 }
 
 void CudaRayTracer::update_structures(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
-  last_update_ = timed([&](uint32_t*) { enqueue_update(dirty_meshes, policy); });
-  last_update_ms_.reset();
+  timed_.opened_update(timed([&](uint32_t*) { enqueue_update(dirty_meshes, policy); }));
 }
 
 void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
@@ -415,7 +414,7 @@ namespace {
 
 void CudaRayTracer::check_overflow() const {
   uint32_t overflowed = 0;
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, device_overflow(kTimedSpans), sizeof(uint32_t), cudaMemcpyDeviceToHost,
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(&overflowed, host_trace_overflow_.data(), sizeof(uint32_t), cudaMemcpyDeviceToHost,
                                    stream_.get()));
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream_.get()));
   if (overflowed) fail_overflow(options_.builder);
@@ -435,7 +434,7 @@ void CudaRayTracer::trace_closest(std::span<const accel::Ray> rays, std::span<ac
   const uint32_t count = upload_host_rays(rays, hits.size(), "hits");
   if (count == 0) return;
   host_hits_.resize(count);
-  uint32_t* overflow = device_overflow(kTimedSpans);
+  uint32_t* overflow = host_trace_overflow_.data();
   GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
   with_tlas_view([&](const auto& tlas) {
     launch_trace_closest(tlas, trace_launch(host_rays_.data(), host_hits_.data(), nullptr, nullptr, count, overflow),
@@ -452,7 +451,7 @@ void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_
   if (count == 0) return;
   host_occluded_.resize(count);
   host_occluded_download_.resize(count);
-  uint32_t* overflow = device_overflow(kTimedSpans);
+  uint32_t* overflow = host_trace_overflow_.data();
   GLINT_CUDA_CHECK(cudaMemsetAsync(overflow, 0, sizeof(uint32_t), stream_.get()));
   with_tlas_view([&](const auto& tlas) {
     launch_trace_any(tlas, trace_launch(host_rays_.data(), nullptr, host_occluded_.data(), nullptr, count, overflow),
@@ -468,13 +467,13 @@ void CudaRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_
 
 template <typename Work>
 rt::GpuTicket CudaRayTracer::timed(Work&& work) {
-  const rt::GpuTicket ticket = timed_.start(stream_.get());
-  const std::size_t slot = timed_.slot(ticket);
-  GLINT_CUDA_CHECK(cudaMemsetAsync(device_overflow(slot), 0, sizeof(uint32_t), stream_.get()));
-  work(device_overflow(slot));
-  GLINT_CUDA_CHECK(cudaMemcpyAsync(&host_overflow_[slot], device_overflow(slot), sizeof(uint32_t),
+  const rt::GpuTicket ticket = start_span(timed_, stream_.get());
+  TracedSpan& span = timed_.span(ticket);
+  GLINT_CUDA_CHECK(cudaMemsetAsync(span.device_overflow.data(), 0, sizeof(uint32_t), stream_.get()));
+  work(span.device_overflow.data());
+  GLINT_CUDA_CHECK(cudaMemcpyAsync(span.host_overflow.data(), span.device_overflow.data(), sizeof(uint32_t),
                                    cudaMemcpyDeviceToHost, stream_.get()));
-  timed_.stop(ticket, stream_.get());
+  stop_span(timed_, ticket, stream_.get());
   return ticket;
 }
 
@@ -519,19 +518,16 @@ rt::HitAndShadowTickets CudaRayTracer::trace_closest_and_hit_shadows_device(cons
 }
 
 std::optional<double> CudaRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
-  const std::optional<double> ms = timed_.elapsed_ms(ticket, wait);
-  if (ms && host_overflow_[timed_.slot(ticket)] != 0) fail_overflow(options_.builder);
-  if (ms && ticket == last_update_) last_update_ms_ = ms;
-  return ms;
+  return timed_.read_ms(ticket, wait, [&](TracedSpan& span) {
+    if (span.host_overflow[0] != 0) fail_overflow(options_.builder);
+  });
 }
 
 rt::RayTracerStats CudaRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = build_ms_;
-  if (last_update_)
-    stats.last_update_ms = timed_.holds(*last_update_) ? *timed_.elapsed_ms(*last_update_, /*wait=*/true)
-                                                       : last_update_ms_.value_or(0.0);
+  stats.last_update_ms = timed_.last_update_ms();
   stats.rebuilds = rebuilds_;
   stats.refits = refits_;
   if (!built_) return stats;

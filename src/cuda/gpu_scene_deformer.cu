@@ -4,7 +4,8 @@
 #include "cuda/device_query.h"
 #include "cuda/gl_buffer_interop.h"
 #include "cuda/gpu_sine_deformer.h"
-#include "cuda/gpu_time_ring.h"
+#include "cuda/cuda_span.h"
+#include "cuda/gpu_span_pool.h"
 
 #include <optional>
 #include <string>
@@ -19,7 +20,7 @@ struct GpuSceneDeformer::State {
   rt::DeviceTracing* tracer = nullptr;
   cudaStream_t stream = nullptr;
   bool owns_stream = false;
-  GpuTimeRing timed{"GPU deformer"};
+  GpuSpanPool<CudaSpan> timed{"GPU deformer"};  // one span per apply, read once by the frame loop
   std::optional<std::uint64_t> last_apply;
 
   ~State() {
@@ -60,13 +61,13 @@ std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
   std::optional<ScopedInteropMap> mapped;
   if (s.gl_vertices) mapped.emplace(*s.gl_vertices, s.stream);
   auto* gl_vertices = mapped ? mapped->pointer<DeformedGlVertex>(0) : nullptr;
-  const std::uint64_t ticket = s.timed.start(s.stream);
+  const std::uint64_t ticket = start_span(s.timed, s.stream);
   for (std::size_t k = 0; k < s.meshes.size(); ++k) {
     const uint32_t mesh = s.deformers->meshes()[k];
     vec3* positions = s.tracer ? s.tracer->device_positions(mesh) : nullptr;
     s.meshes[k].apply(time_seconds, positions, gl_vertices ? gl_vertices + s.base_vertex[mesh] : nullptr, s.stream);
   }
-  s.timed.stop(ticket, s.stream);
+  stop_span(s.timed, ticket, s.stream);
   s.last_apply = ticket;
   return s.deformers->meshes();
 }
@@ -77,7 +78,7 @@ std::uint64_t GpuSceneDeformer::last_apply() const {
 }
 
 std::optional<double> GpuSceneDeformer::apply_ms(std::uint64_t ticket, bool wait) {
-  return state_->timed.elapsed_ms(ticket, wait);
+  return state_->timed.read_ms(ticket, wait);
 }
 
 GpuPosedMesh pose_mesh_on_gpu(const SineDeformer& deformer, float time_seconds) {

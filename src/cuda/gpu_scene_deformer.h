@@ -44,8 +44,9 @@ public:
   // The ticket of the last apply()'s kernels (not the wait for GL the mapping adds before them),
   // for apply_ms; glint::Error before the first apply().
   std::uint64_t last_apply() const;
-  // GPU time of that apply's kernels in milliseconds (cuda/gpu_time_ring.h: read frames later, once
-  // done; nullopt while not done and not `wait`).
+  // GPU time of that apply's kernels in milliseconds (cuda/gpu_span_pool.h: read frames later, once
+  // done; nullopt while not done and not `wait`). Each apply's time is read once: its span is kept
+  // until then, and freed by the read.
   std::optional<double> apply_ms(std::uint64_t ticket, bool wait);
 
 private:

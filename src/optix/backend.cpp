@@ -4,7 +4,8 @@
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "cuda/cuda_stream_events.h"
-#include "cuda/gpu_time_ring.h"
+#include "cuda/cuda_span.h"
+#include "cuda/tracer_gpu_times.h"
 #include "optix/result_check.h"
 #include "optix/device_context.h"
 #include "optix/host_trace.h"
@@ -38,12 +39,8 @@ struct OptixRayTracer::State {
   DeviceContext context;
   TraceClosestPipeline pipeline{context.get(), context.validation()};
   cuda::CudaStream stream;
-  // Device-side traces and structure updates, timed for gpu_ms (one ticket space for both).
-  cuda::GpuTimeRing timed{"rt optix"};
-  std::optional<rt::GpuTicket> last_update;
-  // Its GPU time once gpu_ms read it: stats() reports this after later spans reused its slot (a frame
-  // of many reflection samples traces hundreds of spans).
-  std::optional<double> last_update_ms;
+  // Device-side traces and structure updates, timed for gpu_ms; stats() reads the last update's time.
+  cuda::TracerGpuTimes<cuda::CudaSpan> timed{"rt optix"};
 
   BuildPreference preference = BuildPreference::fast_trace;
   std::vector<MeshStructure> meshes;
@@ -72,9 +69,9 @@ struct OptixRayTracer::State {
     params.rays = as_ray_records(rays);
     params.ray_count = ray_count;
     params.capacity = capacity;
-    const rt::GpuTicket ticket = timed.start(stream.get());
+    const rt::GpuTicket ticket = cuda::start_span(timed, stream.get());
     pipeline.launch(params, stream.get());
-    timed.stop(ticket, stream.get());
+    cuda::stop_span(timed, ticket, stream.get());
     return ticket;
   }
 
@@ -165,7 +162,7 @@ void OptixRayTracer::build(const Scene& scene, const rt::AccelOptions& options) 
   s.ias.build(context, s.instances, ias_build_flags(s.preference), s.scratch, stream);
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
   s.build_ms = watch.elapsed_ms();
-  s.last_update.reset();
+  s.timed.forget_update();
   s.rebuilds = s.refits = 0;
   s.built = true;
 }
@@ -175,15 +172,14 @@ void OptixRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_
   s.require_built("update()");
   rt::check_update(name(), s.shape, scene, dirty_meshes);
   const cudaStream_t stream = s.stream.get();
-  const rt::GpuTicket ticket = s.timed.start(stream);
+  const rt::GpuTicket ticket = cuda::start_span(s.timed, stream);
   for (const std::uint32_t m : dirty_meshes) s.meshes[m].gas.upload_positions(scene.meshes[m].positions, stream);
   // Transforms may have moved too (animated instances): re-read them all, the IAS is small.
   for (std::size_t i = 0; i < scene.instances.size(); ++i)
     s.instances[i] = make_instance(scene.instances[i].transform, static_cast<unsigned int>(i), 0);
   s.update_structures(dirty_meshes, policy);
-  s.timed.stop(ticket, stream);
-  s.last_update = ticket;
-  s.last_update_ms.reset();
+  cuda::stop_span(s.timed, ticket, stream);
+  s.timed.opened_update(ticket);
   // The copies read `scene`'s vertices, which the caller may change once this returns.
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
 }
@@ -207,9 +203,7 @@ rt::RayTracerStats OptixRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
   stats.build_ms = s.build_ms;
-  if (s.last_update)
-    stats.last_update_ms = s.timed.holds(*s.last_update) ? *s.timed.elapsed_ms(*s.last_update, /*wait=*/true)
-                                                         : s.last_update_ms.value_or(0.0);
+  stats.last_update_ms = s.timed.last_update_ms();
   stats.rebuilds = s.rebuilds;
   stats.refits = s.refits;
   std::uint64_t bytes = s.ias.bytes();
@@ -239,12 +233,12 @@ rt::GpuTicket OptixRayTracer::trace_any_device(const accel::Ray* rays, uint32_t*
 }
 
 std::optional<double> OptixRayTracer::gpu_ms(rt::GpuTicket ticket, bool wait) {
-  const std::optional<double> ms = state_->timed.elapsed_ms(ticket, wait);
-  if (ms && ticket == state_->last_update) state_->last_update_ms = ms;
-  return ms;
+  return state_->timed.read_ms(ticket, wait);
 }
 
-std::optional<rt::GpuTicket> OptixRayTracer::last_update() const { return state_->last_update; }
+void OptixRayTracer::drop_ticket(rt::GpuTicket ticket) { state_->timed.drop(ticket); }
+
+std::optional<rt::GpuTicket> OptixRayTracer::last_update() { return state_->timed.take_last_update(); }
 
 vec3* OptixRayTracer::device_positions(uint32_t mesh) {
   State& s = *state_;
@@ -258,11 +252,10 @@ void OptixRayTracer::update_device(std::span<const uint32_t> dirty_meshes, rt::U
   s.require_built("update_device()");
   for (const std::uint32_t m : dirty_meshes)
     if (m >= s.meshes.size()) fail("rt optix: dirty mesh {} of {}", m, s.meshes.size());
-  const rt::GpuTicket ticket = s.timed.start(s.stream.get());
+  const rt::GpuTicket ticket = cuda::start_span(s.timed, s.stream.get());
   s.update_structures(dirty_meshes, policy);
-  s.timed.stop(ticket, s.stream.get());
-  s.last_update = ticket;
-  s.last_update_ms.reset();
+  cuda::stop_span(s.timed, ticket, s.stream.get());
+  s.timed.opened_update(ticket);
 }
 
 }  // namespace glint::optix

@@ -44,7 +44,8 @@ public:
   rt::GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
                                  uint32_t capacity) override;
   std::optional<double> gpu_ms(rt::GpuTicket ticket, bool wait) override;
-  std::optional<rt::GpuTicket> last_update() const override;
+  void drop_ticket(rt::GpuTicket ticket) override;
+  std::optional<rt::GpuTicket> last_update() override;
   vec3* device_positions(uint32_t mesh) override;
   void update_device(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 

@@ -1,5 +1,6 @@
 #include "render/device_reflection_trace.h"
 
+#include "core/error.h"
 #include "gl/gl_pass_scope.h"
 #include "render/hit_shadow_rays.h"
 
@@ -28,13 +29,19 @@ std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, vec3 light_position
   auto* hits = mapped.pointer<accel::Hit>(1);
   const auto* count = mapped.pointer<const std::uint32_t>(2);
   const auto capacity = static_cast<std::uint32_t>(buffers_.capacity());
+  TraceTime& time = times_[slot];
+  if (time.unread) device_.drop_ticket(*time.unread);
+  time = {};
   if (hit_shadows_ && hit_shadows_->traced_with_hits()) {
     cuda::ScopedInteropMap shadow = hit_shadows_->answers().map_for_cuda();
     const rt::HitShadowRays request{light_position, hit_shadows_->origin_offset(), shadow.pointer<accel::Ray>(0),
                                     shadow.pointer<std::uint32_t>(1)};
-    tickets_[slot] = device_.trace_closest_and_hit_shadows_device(rays, hits, count, capacity, request).closest;
+    const rt::HitAndShadowTickets tickets =
+        device_.trace_closest_and_hit_shadows_device(rays, hits, count, capacity, request);
+    time.unread = tickets.closest;
+    device_.drop_ticket(tickets.shadows);  // the frame's trace time is the closest-hit trace's
   } else {
-    tickets_[slot] = device_.trace_closest_device(rays, hits, count, capacity);
+    time.unread = device_.trace_closest_device(rays, hits, count, capacity);
   }
   return capacity;
 }
@@ -43,9 +50,14 @@ std::optional<RayTraceFrameStats> DeviceReflectionTrace::stats(std::size_t slot,
   const std::optional<RayListCounts> counts = buffers_.requested_counts(slot, wait);
   if (!counts) return std::nullopt;
   // The GPU passed the frame's hit shading, so its trace has ended: the time is there.
-  const std::optional<double> trace_ms = device_.gpu_ms(tickets_[slot], wait);
-  if (!trace_ms) return std::nullopt;
-  return RayTraceFrameStats{counts->rays, counts->reflective, *trace_ms};
+  TraceTime& time = times_[slot];
+  if (!time.ms) {
+    if (!time.unread) fail("device reflection trace: statistics of readback slot {} before its trace", slot);
+    time.ms = device_.gpu_ms(*time.unread, wait);
+    if (!time.ms) return std::nullopt;
+    time.unread.reset();
+  }
+  return RayTraceFrameStats{counts->rays, counts->reflective, *time.ms};
 }
 
 }  // namespace glint::render

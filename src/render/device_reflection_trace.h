@@ -8,6 +8,7 @@
 #include "render/reflection_trace_step.h"
 
 #include <array>
+#include <optional>
 
 namespace glint::render {
 
@@ -24,7 +25,14 @@ private:
   RayHitBuffers& buffers_;
   HitShadowRays* hit_shadows_;   // null without shadow rays
   cuda::GlBufferInterop interop_;  // rays, hits, counters
-  std::array<rt::GpuTicket, kFramesInFlight> tickets_{};  // per readback slot: the trace's GPU span
+  // Per readback slot: the trace's GPU time, read once (the read frees the tracer's span) and kept
+  // for a second stats() of the slot; a ticket still unread when its slot is traced again can no
+  // longer be asked for, and is let go.
+  struct TraceTime {
+    std::optional<rt::GpuTicket> unread;
+    std::optional<double> ms;
+  };
+  std::array<TraceTime, kFramesInFlight> times_{};
 };
 
 }  // namespace glint::render

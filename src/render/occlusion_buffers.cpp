@@ -67,15 +67,17 @@ void OcclusionBuffers::trace(std::size_t host_count) {
   }
   if (device_) {
     // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping orders the GL
-    // passes that read the answers after the trace: the host only enqueues.
+    // passes that read the answers after the trace: the host only enqueues. Nobody reads this
+    // trace's GPU time: its ticket is let go.
     cuda::ScopedInteropMap mapped(*interop_, device_->stream());
-    if (query_ == RayQuery::closest) {
-      device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
-                                    mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
-      return;
-    }
-    device_->trace_any_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<std::uint32_t>(1),
-                              mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
+    const rt::GpuTicket ticket =
+        query_ == RayQuery::closest
+            ? device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),
+                                            mapped.pointer<const std::uint32_t>(2),
+                                            static_cast<std::uint32_t>(capacity_))
+            : device_->trace_any_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<std::uint32_t>(1),
+                                        mapped.pointer<const std::uint32_t>(2), static_cast<std::uint32_t>(capacity_));
+    device_->drop_ticket(ticket);
     return;
   }
   if (host_count > capacity_) fail("{}: {} rays, more than the capacity {}", what_, host_count, capacity_);

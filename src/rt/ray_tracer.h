@@ -140,7 +140,8 @@ public:
 };
 
 // A timed piece of GPU work a DeviceTracing call enqueued (a trace, an update): its GPU time is read
-// with gpu_ms() once the GPU has done it, frames later (cuda/gpu_time_ring.h).
+// with gpu_ms() once the GPU has done it, frames later. The backend keeps the work's timing until it
+// is read, or let go with drop_ticket(), however much work comes after (cuda/gpu_span_pool.h).
 using GpuTicket = std::uint64_t;
 
 // The shadow rays of reflection hits, traced in the same enqueued work as the hits themselves (no GL
@@ -158,8 +159,8 @@ struct HitShadowRays {
 };
 
 // The tickets of trace_closest_and_hit_shadows_device: the closest-hit trace, then the shadow rays'
-// generation and occlusion trace.
-struct HitAndShadowTickets {
+// generation and occlusion trace (each read or dropped, as every ticket).
+struct [[nodiscard]] HitAndShadowTickets {
   GpuTicket closest = 0;
   GpuTicket shadows = 0;
 };
@@ -176,15 +177,16 @@ public:
 
   // hits[i] = closest hit of rays[i] for i < *ray_count (a device-memory counter, read on the GPU,
   // so the host never waits for it); rays, hits and ray_count are device pointers, and at most
-  // `capacity` rays are traced. Same hit convention as RayTracer::trace_closest.
-  virtual GpuTicket trace_closest_device(const accel::Ray* rays, accel::Hit* hits, const uint32_t* ray_count,
-                                         uint32_t capacity) = 0;
+  // `capacity` rays are traced. Same hit convention as RayTracer::trace_closest. The ticket is read
+  // (gpu_ms) or dropped (drop_ticket), as every trace's: the backend keeps its timing until then.
+  [[nodiscard]] virtual GpuTicket trace_closest_device(const accel::Ray* rays, accel::Hit* hits,
+                                                       const uint32_t* ray_count, uint32_t capacity) = 0;
   // The occlusion query of RayTracer::trace_any on device memory: occluded[i] = 1 when rays[i] hits
   // any triangle within [t_min, t_max], else 0, for i < *ray_count (read on the GPU, at most
   // `capacity`), one uint32_t per ray so a GLSL shader reads it as a `uint` array through a shared
   // GL buffer. Slots at or past the count are not written. Enqueued like trace_closest_device.
-  virtual GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded, const uint32_t* ray_count,
-                                     uint32_t capacity) = 0;
+  [[nodiscard]] virtual GpuTicket trace_any_device(const accel::Ray* rays, uint32_t* occluded,
+                                                   const uint32_t* ray_count, uint32_t capacity) = 0;
   // Whether trace_closest_and_hit_shadows_device exists here; without it the caller writes the hits'
   // shadow rays in a GL pass and traces them with trace_any_device (one more GL-CUDA hand-over).
   virtual bool traces_hit_shadows() const { return false; }
@@ -195,9 +197,13 @@ public:
                                                                    const HitShadowRays& shadows);
   // GPU time in milliseconds of the work `ticket` names (a trace or an update; CUDA events). nullopt
   // while the GPU has not finished it and `wait` is false (wait: blocks until it has). Also reports
-  // what the work found wrong (a traversal stack overflow) as glint::Error; and glint::Error for a
-  // ticket older than the backend keeps (64 timed pieces of work).
+  // what the work found wrong (a traversal stack overflow) as glint::Error. A time is read once: the
+  // read that returns it frees the ticket's timing, and asking again is glint::Error (as for a
+  // ticket never issued or dropped), except for the last update's, which stays until the next.
   virtual std::optional<double> gpu_ms(GpuTicket ticket, bool wait) = 0;
+  // The caller will not read `ticket`'s time (a trace it does not time): the backend lets it go.
+  // glint::Error for a ticket never issued, read or dropped.
+  virtual void drop_ticket(GpuTicket ticket) = 0;
 
   // Object-space positions of mesh `mesh` in device memory (vertex_count vec3, the backend's own
   // copy), for a GPU deformer to overwrite before update_device(); glint::Error out of range.
@@ -207,8 +213,9 @@ public:
   virtual void update_device(std::span<const uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
   // The ticket of the last update or update_device (its GPU time through gpu_ms), or nullopt before
   // the first or when the backend does not time it. The host time of those calls is only their
-  // enqueueing.
-  virtual std::optional<GpuTicket> last_update() const { return std::nullopt; }
+  // enqueueing. Asking takes the ticket: its timing is kept until read (or dropped); an update whose
+  // ticket nobody took is let go at the next (stats() reports the last one's time either way).
+  virtual std::optional<GpuTicket> last_update() { return std::nullopt; }
 };
 
 // The backends themselves (names, factories, which this binary has) are listed in one place above

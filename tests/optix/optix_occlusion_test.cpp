@@ -108,7 +108,7 @@ TEST(OptixRayTracerOcclusion, MisuseIsAClearError) {
   std::vector<uint8_t> occluded(1);
   EXPECT_NE(testing::error_of([&] { tracer->trace_any(rays, occluded); }).find("trace_any() before build()"),
             std::string::npos);
-  EXPECT_NE(testing::error_of([&] { tracer->device_tracing()->trace_any_device(nullptr, nullptr, nullptr, 0); })
+  EXPECT_NE(testing::error_of([&] { (void)tracer->device_tracing()->trace_any_device(nullptr, nullptr, nullptr, 0); })
                 .find("trace_any_device() before build()"),
             std::string::npos);
   tracer->build(scene, {});
@@ -143,8 +143,8 @@ TEST(OptixRayTracerOcclusion, DeviceQueryStopsAtTheGpuSideRayCount) {
   cuda::DeviceBuffer<uint32_t> count;
   count.upload(std::span<const uint32_t>(&traced, 1));
   const auto capacity = static_cast<uint32_t>(rays.size());
-  device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity);
-  device.trace_closest_device(device_rays.data(), device_hits.data(), count.data(), capacity);
+  device.drop_ticket(device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity));
+  device.drop_ticket(device.trace_closest_device(device_rays.data(), device_hits.data(), count.data(), capacity));
   const GpuTicket last = device.trace_any_device(device_rays.data(), device_occluded.data(), count.data(), capacity);
   ASSERT_EQ(cudaStreamSynchronize(static_cast<cudaStream_t>(device.stream())), cudaSuccess);
   EXPECT_GE(*device.gpu_ms(last, /*wait=*/true), 0.0);
