@@ -3,6 +3,7 @@
 #include "accel/builders/builder.h"
 #include "rt/blas_structure.h"
 #include "app/bench/adaptive_experiment.h"
+#include "app/bench/glossy_experiment.h"
 #include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_report.h"
@@ -48,7 +49,7 @@ using bench::Cell;
 using bench::CellKind;
 using bench::CellOutcome;
 
-constexpr const char* kExperiments[] = {"paper", "adaptive"};
+constexpr const char* kExperiments[] = {"paper", "adaptive", "glossy"};
 
 // A cell of this run: what it is, its frames and what became of it.
 struct PlannedCell {
@@ -74,7 +75,7 @@ std::string joined(const std::vector<std::string>& items) {
 void check_options(const BenchOptions& options) {
   bool known = false;
   for (const char* experiment : kExperiments) known = known || options.experiment == experiment;
-  if (!known) fail("--experiment: unknown experiment \"{}\" (known: paper, adaptive)", options.experiment);
+  if (!known) fail("--experiment: unknown experiment \"{}\" (known: paper, adaptive, glossy)", options.experiment);
 }
 
 // The settings every kept cell must share with this run (resume.h).
@@ -189,6 +190,10 @@ BenchOptions with_quick_defaults(BenchOptions options) {
   unless_given("--warmup", options.warmup, 1);
   unless_given("--interval", options.interval, 2);
   unless_given("--shadow-map-size", options.shadow_map_size, 128);
+  unless_given("--reference-spp", options.reference_spp, 16);
+  unless_given("--flicker-frames", options.flicker_frames, 3);
+  // glossy: the first quality frame only (1800), each of its configurations rendering 3 x 3 + 2 frames.
+  if (options.experiment == "glossy") unless_given("--frames", options.frames, 1801);
   return options;
 }
 
@@ -196,8 +201,9 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
   CLI::App* command = app.add_subcommand(
       "bench", "Run the paper's experiment matrix (Figs. 5, 7-10, 12, Tables I-II): CSVs, summary.json, charts, report.md");
   command->add_option("--experiment", options.experiment,
-                      "Experiment to run: paper, or adaptive (quality vs reflection cost of ssr, hybrid, rt and auto; "
-                      "docs/bench.md)")
+                      "Experiment to run: paper, adaptive (quality vs reflection cost of ssr, hybrid, rt and auto) "
+                      "or glossy (glossy ssr, hybrid, rt with and without the denoiser against the converged "
+                      "reference: SSIM, PSNR, cost, flicker); docs/bench.md")
       ->required();
   command->add_option("--scene", options.scene, "Full scene (Figs. 5, 7, Table I): atrium, sponza or a scene file")
       ->capture_default_str();
@@ -214,7 +220,9 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
       ->capture_default_str();
   command->add_option("--updates", options.updates, "Update policies of the deforming cells: rebuild, refit, auto")
       ->capture_default_str();
-  command->add_option("--frames", options.frames, "Walkthrough frames considered: 0 .. N-1 (the paper: 4900)")
+  command->add_option("--frames", options.frames,
+                      "Walkthrough frames considered: 0 .. N-1 (the paper: 4900; adaptive and glossy: their quality "
+                      "frames 1800, 2100, 2300, 4400 below N)")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   command->add_option("--stride", options.stride, "Measure every K-th of those frames")
@@ -238,14 +246,25 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
       ->add_option("--shadows", options.shadows, "How the light's shadow is made: cube, rt or hybrid (as glint render)")
       ->check(CLI::IsMember(render::kShadowMethodNames.names()))
       ->capture_default_str();
+  command->add_option("--reference-spp", options.reference_spp,
+                      "glossy: reflection samples per pixel of the converged reference (rt, --denoise off), "
+                      "cached in DIR/references")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  command->add_option("--flicker-frames", options.flicker_frames,
+                      "glossy: frames of each flicker series: the walkthrough frames up to each measured frame, "
+                      "then as many held still (camera, light, meshes) as warm-up and as many measured")
+      ->check(CLI::Range(2, 1000))
+      ->capture_default_str();
   command->add_flag("--quick", options.quick,
-                    "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple (flags given "
-                    "explicitly still apply)");
+                    "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple; glossy: frame 1800 only, "
+                    "a 16-sample reference, 3 flicker frames (flags given explicitly still apply)");
   command->add_flag("--no-plot", options.no_plot, "Do not run tools/plot_bench.py (report.md says how to)");
   command->add_option("--out", options.out, "Output folder (created if missing; a run in it is resumed)")->required();
   command->callback([command, &options] {
     for (const char* flag : {"--scene", "--simple-scene", "--backends", "--accels", "--updates", "--frames", "--stride",
-                             "--width", "--height", "--warmup", "--interval", "--shadow-map-size"})
+                             "--width", "--height", "--warmup", "--interval", "--shadow-map-size", "--reference-spp",
+                             "--flicker-frames"})
       if (command->count(flag) > 0) options.given.insert(flag);
   });
 }
@@ -256,6 +275,7 @@ int run_bench_command(const BenchOptions& given_options) {
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
   if (options.experiment == "adaptive") return bench::run_adaptive_experiment(options);
+  if (options.experiment == "glossy") return bench::run_glossy_experiment(options);
   const std::vector<std::string> known_backends = backends::backend_names();
   const std::vector<std::string> known_accels = rt::blas_structure_names();
   const std::vector<std::string> backends = parse_name_list("--backends", options.backends, known_backends);

@@ -12,7 +12,7 @@
 namespace glint {
 
 struct BenchOptions {
-  std::string experiment;                          // "paper"
+  std::string experiment;                          // "paper", "adaptive" or "glossy"
   std::string scene = "atrium";                    // Figs. 5, 7 and Table I
   std::string simple_scene = "atrium-simple";      // Figs. 8, 9, 10, 12 and Table II
   std::string backends = "cpu,embree,cuda,optix";
@@ -27,6 +27,11 @@ struct BenchOptions {
   int shadow_map_size = 1024;
   std::string gbuffer = "raster";                  // raster|visibility, as glint render --gbuffer
   std::string shadows = "cube";                    // cube|rt|hybrid, as glint render --shadows
+  // --experiment glossy (app/bench/glossy_experiment.h): samples per pixel of the converged reference,
+  // and the frames of each flicker series (the walkthrough's before a measured frame; the still
+  // camera's warm-up and its measured series)
+  int reference_spp = 256;
+  int flicker_frames = 16;
   bool quick = false;   // smoke run: tiny resolution, few frames, cpu backend, atrium-simple
   bool no_plot = false;
   std::string out;
