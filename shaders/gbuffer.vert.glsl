@@ -5,6 +5,9 @@
 #include "include/frame_constants.glsl"
 
 #include "include/scene_instances.glsl"
+#include "include/surface_motion.glsl"
+
+uniform int write_motion;  // render::SurfaceMotion is on: world_motion is written (else 0)
 
 layout(location = 0) in vec4 position_u;
 layout(location = 1) in vec4 normal_v;
@@ -13,6 +16,7 @@ layout(location = 2) in uint instance_index;
 out vec3 world_position;
 out vec3 world_normal;
 out vec2 uv;
+out vec3 world_motion;  // previous minus current world position (0 where the vertex did not move)
 flat out uint material;
 
 // The visibility G-buffer's id pass (visibility.vert.glsl) computes gl_Position the same way; invariant
@@ -26,5 +30,7 @@ void main() {
   world_normal = mat3(instance.normal_matrix) * normal_v.xyz;
   uv = vec2(position_u.w, normal_v.w);
   material = instance.material;
+  // gl_VertexID includes the draw's base vertex: the vertex's index into the scene's vertex buffer.
+  world_motion = write_motion != 0 ? vertex_world_motion(instance.model, uint(gl_VertexID), position_u.xyz) : vec3(0.0);
   gl_Position = view_projection * world;
 }

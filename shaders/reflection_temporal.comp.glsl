@@ -1,9 +1,11 @@
 #version 450 core
 // Temporal accumulation of the reflection (ReflectionDenoiser, docs/glossy.md). Per reflective pixel:
 //   c        = fade(distance) * reflection.rgb     (the distance fade of docs/ssr.md, applied here)
-//   previous = the history at the pixel's previous-frame position (camera motion vector,
-//              include/reprojection.glsl), bilinear over the taps that are the same surface
-//              (plane distance and normal tests); none: disoccluded, the history restarts
+//   previous = the history at the pixel's previous-frame position (its world position plus the
+//              surface's own motion, render/surface_motion.h, 0 for static geometry, projected
+//              with the previous view-projection: include/reprojection.glsl), bilinear over the taps
+//              that are the same surface (plane distance of the previous position and normal
+//              tests); none: disoccluded, the history restarts
 //   previous is clamped to mean +- clamp_sigma x deviation of c over the 3x3 neighbourhood
 //   n        = min(history length + 1, 1 + (max_history - 1) min(roughness / 0.3, 1)^2)
 //   out      = mix(previous, c, 1 / n)   (near-mirrors keep little history: see below)
@@ -23,11 +25,13 @@ layout(binding = 3) uniform sampler2D albedo_reflectivity;
 layout(binding = 4) uniform sampler2D history;
 layout(binding = 5) uniform sampler2D previous_position;
 layout(binding = 6) uniform sampler2D previous_normal;
+layout(binding = 7) uniform sampler2D world_motion;  // with has_motion: previous - current world position
 layout(binding = 0, rgba16f) uniform writeonly image2D accumulated;
 layout(binding = 24, std430) writeonly buffer Motion { vec2 motion[]; };
 
 uniform mat4 previous_view_projection;
 uniform int has_history;
+uniform int has_motion;
 uniform float max_history;
 uniform float clamp_sigma;
 uniform float depth_tolerance;
@@ -58,7 +62,9 @@ void main() {
   const vec4 position = texelFetch(world_position, pixel, 0);
   const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
   const vec3 normal = normalize(normal_roughness.xyz);
-  const vec2 previous = previous_pixel_position(previous_view_projection, position.xyz, vec2(size));
+  // Where this surface point was: static geometry's motion is exactly 0, so it keeps position.xyz.
+  const vec3 previous_world = has_motion != 0 ? position.xyz + texelFetch(world_motion, pixel, 0).xyz : position.xyz;
+  const vec2 previous = previous_pixel_position(previous_view_projection, previous_world, vec2(size));
 
   // Bilinear taps around the previous position that are this surface.
   const vec2 base = previous - 0.5;
@@ -72,7 +78,7 @@ void main() {
       for (int i = 0; i < 2; ++i) {
         const ivec2 tap = corner + ivec2(i, j);
         if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, size))) continue;
-        if (!same_surface(position.xyz, normal, camera_distance, texelFetch(previous_position, tap, 0),
+        if (!same_surface(previous_world, normal, camera_distance, texelFetch(previous_position, tap, 0),
                           normalize(texelFetch(previous_normal, tap, 0).xyz), depth_tolerance))
           continue;
         const float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);

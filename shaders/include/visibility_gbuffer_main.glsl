@@ -26,12 +26,32 @@
 // trilinear filter in the shader (visibility_gbuffer_texel_fetch.comp.glsl).
 #include "include/frame_constants.glsl"
 #include "include/surface_point.glsl"
+#include "include/surface_motion.glsl"
 
 layout(binding = 0, rg32ui) uniform readonly uimage2D visibility_ids;
 layout(binding = 1, rgba8) uniform writeonly image2D albedo_reflectivity;
 layout(binding = 2, rgba32f) uniform writeonly image2D world_position;
 layout(binding = 3, rgba16f) uniform writeonly image2D world_normal_roughness;
 layout(binding = 4, r32ui) uniform writeonly uimage2D material_id;
+// render::SurfaceMotion (src/render/surface_motion.h): written only when write_motion is 1.
+layout(binding = 5, rgba16f) uniform writeonly image2D world_motion;
+uniform int write_motion;
+
+// Previous minus current world position of the point with weights (1 - u - v, u, v) of triangle
+// `prim` of instance `instance_index`: the corners' displacements (exactly 0 where a corner did not
+// move) interpolated with the weights surface_point() takes.
+vec3 surface_world_motion(uint instance_index, uint prim, vec2 hit_uv) {
+  const GpuInstance instance = instances[instance_index];
+  const GpuMeshRange range = mesh_ranges[instance.mesh];
+  const uint first = range.first_index + 3u * prim;
+  const vec3 weights = vec3(1.0 - hit_uv.x - hit_uv.y, hit_uv.x, hit_uv.y);
+  vec3 motion = vec3(0.0);
+  for (int i = 0; i < 3; ++i) {
+    const uint vertex = range.base_vertex + indices[first + uint(i)];
+    motion += weights[i] * vertex_world_motion(instance.model, vertex, vertices[vertex].position_u.xyz);
+  }
+  return motion;
+}
 
 // Weights (of corners 0, 1, 2) of the point of the triangle with clip-space corners `clip` that
 // projects to `ndc`; (1/3, 1/3, 1/3) for a triangle seen edge-on (the rasteriser covers no pixel
@@ -60,6 +80,7 @@ void main() {
     imageStore(world_position, pixel, vec4(0.0));
     imageStore(world_normal_roughness, pixel, vec4(0.0));
     imageStore(material_id, pixel, uvec4(0u));
+    if (write_motion != 0) imageStore(world_motion, pixel, vec4(0.0));
     return;
   }
 
@@ -85,4 +106,5 @@ void main() {
   imageStore(world_position, pixel, vec4(surface.position, 1.0));
   imageStore(world_normal_roughness, pixel, vec4(surface.normal, material.roughness));
   imageStore(material_id, pixel, uvec4(surface.material + 1u));
+  if (write_motion != 0) imageStore(world_motion, pixel, vec4(surface_world_motion(id.x - 1u, id.y, weights.yz), 0.0));
 }

@@ -20,8 +20,9 @@ void draw_scene_depth_tested(GLuint framebuffer, int width, int height, const Sh
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
 }
 
-GBufferPass::GBufferPass(const RasterTargets& targets)
+GBufferPass::GBufferPass(const RasterTargets& targets, const SurfaceMotion* motion)
     : targets_(&targets),
+      motion_(motion),
       framebuffer_(create_framebuffer()),
       program_(ShaderProgram::from_embedded({"gbuffer.vert.glsl", "gbuffer.frag.glsl"})) {
   const GLuint fb = framebuffer_.id();
@@ -30,9 +31,10 @@ GBufferPass::GBufferPass(const RasterTargets& targets)
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT2, targets.world_normal_roughness.id(), 0);
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT3, targets.material_id.id(), 0);
   glNamedFramebufferTexture(fb, GL_DEPTH_ATTACHMENT, targets.depth.id(), 0);
-  const std::array<GLenum, 4> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
-                                         GL_COLOR_ATTACHMENT3};
-  glNamedFramebufferDrawBuffers(fb, static_cast<GLsizei>(buffers.size()), buffers.data());
+  if (motion != nullptr) glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT4, motion->world_motion(), 0);
+  const std::array<GLenum, 5> buffers = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                         GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4};
+  glNamedFramebufferDrawBuffers(fb, motion != nullptr ? 5 : 4, buffers.data());
   require_framebuffer_complete(framebuffer_, "G-buffer");
   check_gl("G-buffer pass set-up");
 }
@@ -49,6 +51,11 @@ void GBufferPass::run(const GpuScene& scene) {
   for (GLint i = 0; i < 3; ++i) glClearNamedFramebufferfv(fb, GL_COLOR, i, &zero.x);
   glClearNamedFramebufferuiv(fb, GL_COLOR, 3, zero_id);
   glClearNamedFramebufferfv(fb, GL_DEPTH, 0, &far_depth);
+  program_.set_uniform("write_motion", motion_ != nullptr ? 1 : 0);
+  if (motion_ != nullptr) {
+    glClearNamedFramebufferfv(fb, GL_COLOR, 4, &zero.x);
+    motion_->bind_previous_vertices();
+  }
 
   draw_scene_depth_tested(fb, targets_->width, targets_->height, program_, scene);
   check_gl("G-buffer pass");

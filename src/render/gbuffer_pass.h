@@ -3,12 +3,14 @@
 //   inputs:  GpuScene (vertices, instances, materials, texture array), FrameConstants UBO bound at
 //            kFrameConstantsBinding
 //   outputs: RasterTargets albedo_reflectivity, world_position (w = 1 geometry, 0 background),
-//            world_normal_roughness, material_id (index + 1, 0 background), depth
+//            world_normal_roughness, material_id (index + 1, 0 background), depth; with a
+//            SurfaceMotion also its world_motion (0 background)
 // No face culling: scenes are open sheets, and back faces must be seen (SSR tells them by normal).
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
 #include "render/raster_targets.h"
+#include "render/surface_motion.h"
 
 namespace glint::render {
 
@@ -20,12 +22,14 @@ void draw_scene_depth_tested(GLuint framebuffer, int width, int height, const Sh
 
 class GBufferPass {
 public:
-  explicit GBufferPass(const RasterTargets& targets);  // the targets must outlive the pass
+  // The targets (and `motion`, when given) must outlive the pass.
+  explicit GBufferPass(const RasterTargets& targets, const SurfaceMotion* motion = nullptr);
 
   void run(const GpuScene& scene);
 
 private:
   const RasterTargets* targets_;
+  const SurfaceMotion* motion_;
   GlFramebuffer framebuffer_;
   ShaderProgram program_;
 };

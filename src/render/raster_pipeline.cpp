@@ -35,12 +35,14 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
       shadow_chunks_(settings_.shadow_cube_draw == ShadowCubeDraw::per_face
                          ? std::optional<ShadowChunks>(std::in_place, scene, gpu_scene_)
                          : std::nullopt) {
+  if (settings_.surface_motion) surface_motion_.emplace(scene, gpu_scene_, width, height);
+  const SurfaceMotion* motion = surface_motion_ ? &*surface_motion_ : nullptr;
   if (settings_.gbuffer == GBufferMethod::visibility) {
     if (settings_.primary == PrimaryVisibility::raster) visibility_ids_.emplace(targets_);
     if (settings_.primary == PrimaryVisibility::compute) compute_visibility_.emplace(targets_, gpu_scene_);
-    visibility_gbuffer_.emplace(targets_);
+    visibility_gbuffer_.emplace(targets_, motion);
   } else {
-    gbuffer_.emplace(targets_);
+    gbuffer_.emplace(targets_, motion);
   }
   check_gl("raster pipeline set-up");
 }
@@ -69,6 +71,7 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
       fail("raster pipeline: ray-traced primary visibility without a ray tracer (trace_primary_visibility)");
     visibility_gbuffer_->run(gpu_scene_);
   }
+  if (surface_motion_) surface_motion_->keep_vertices(gpu_scene_);  // the next frame's previous vertices
   timed.reset();
   if (timer != nullptr) timed.emplace(*timer, "shadow");
   if (shadow.cube) {

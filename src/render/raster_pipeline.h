@@ -23,6 +23,7 @@
 #include "render/shadow_cube_pass.h"
 #include "render/shadow_mask_pass.h"
 #include "render/visibility_gbuffer_pass.h"
+#include "render/surface_motion.h"
 #include "render/visibility_id_pass.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
@@ -71,6 +72,8 @@ public:
   GLuint shadow_mask() const { return targets_.shadow_mask.id(); }
   GLuint lit() const { return targets_.lit.id(); }
   GLuint visibility_id() const { return targets_.visibility_id.id(); }  // 0 unless the visibility method
+  // SurfaceMotion's world motion image (RasterSettings::surface_motion); 0 when off.
+  GLuint world_motion() const { return surface_motion_ ? surface_motion_->world_motion() : 0; }
   GLuint shadow_cube_map() const { return shadow_cube_.cube_map(); }
   const ShadowCubePass& shadow_cube() const { return shadow_cube_; }  // size and far distance too
   GLuint frame_constants_buffer() const { return frame_constants_buffer_.id(); }
@@ -93,6 +96,7 @@ private:
   RasterTargets targets_;
   GlBuffer frame_constants_buffer_;
   FrameConstants frame_constants_;
+  std::optional<SurfaceMotion> surface_motion_;  // RasterSettings::surface_motion; both G-buffer methods write it
   // One G-buffer method is made, the one RasterSettings::gbuffer names.
   std::optional<GBufferPass> gbuffer_;
   std::optional<VisibilityIdPass> visibility_ids_;

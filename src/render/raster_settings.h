@@ -64,6 +64,9 @@ struct RasterSettings {
   ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
   GBufferMethod gbuffer = GBufferMethod::raster;
   PrimaryVisibility primary = PrimaryVisibility::raster;  // rt, compute: need gbuffer visibility (rt: and a tracer)
+  // Also write the G-buffer's world motion of the deforming meshes (SurfaceMotion, surface_motion.h):
+  // the reflection denoiser's reprojection; FramePipeline turns it on with --denoise on.
+  bool surface_motion = false;
   float pcf_radius_texels = 1.5f;     // 0 = one shadow sample (hard edges), else 20-sample PCF
   float constant_bias_texels = 0.5f;  // distance bias at normal incidence
   float slope_bias_texels = 1.0f;     // times tan(angle between normal and light) x (1 + PCF radius)

@@ -6,6 +6,7 @@
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
+#include "render/surface_motion.h"
 
 #include <cstddef>
 
@@ -48,6 +49,8 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   require_texture("reflection denoiser", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat,
                   w, h);
   require_buffer("reflection denoiser", "frame_constants", inputs.frame_constants);
+  if (inputs.world_motion != 0)
+    require_texture("reflection denoiser", "world_motion", inputs.world_motion, kWorldMotionFormat, w, h);
   const DenoiseSettings& d = settings.denoiser;
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
 
@@ -59,6 +62,7 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   temporal_.set_uniform("depth_tolerance", d.depth_tolerance);
   temporal_.set_uniform("fade_start", settings.fade_start);
   temporal_.set_uniform("fade_end", settings.fade_end);
+  temporal_.set_uniform("has_motion", inputs.world_motion != 0 ? 1 : 0);
   glBindTextureUnit(0, inputs.reflection);
   glBindTextureUnit(1, inputs.world_position);
   glBindTextureUnit(2, inputs.world_normal_roughness);
@@ -66,6 +70,7 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   glBindTextureUnit(4, history_[current_ ^ 1].id());
   glBindTextureUnit(5, previous_position_.id());
   glBindTextureUnit(6, previous_normal_.id());
+  glBindTextureUnit(7, inputs.world_motion);
   glBindImageTexture(0, history_[current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kHistoryFormat);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionBinding, motion_.id());
   temporal_.use();
@@ -96,7 +101,7 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   previous_view_projection_ = inputs.view_projection;
   has_history_ = true;
   current_ ^= 1;
-  for (GLuint unit = 0; unit < 7; ++unit) glBindTextureUnit(unit, 0);
+  for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
   check_gl("reflection denoiser");
 }
 

@@ -8,10 +8,13 @@
 //     mirrors (roughness 0) pass through
 //   spatial (shaders/reflection_spatial.comp.glsl): `iterations` a-trous passes (steps 1, 2, 4)
 //     weighted by a roughness footprint, plane distance, normals and roughness
-// Deforming meshes have no motion vectors of their own (the G-buffer keeps no previous positions):
-// their moved surface fails the same-surface test where it moved and restarts its history there.
+// Geometry that moves by itself (the deforming meshes) is reprojected by its own motion too: the
+// pixel's previous world position is its world position plus SurfaceMotion's world motion
+// (render/surface_motion.h), projected with the previous view-projection; without that image (0)
+// every surface counts as static.
 //   inputs:  the frame's reflection (kReflectionFormat: rgb, a = distance), G-buffer world position,
-//            normal + roughness, albedo + reflectivity, FrameConstants UBO, the frame's view-projection
+//            normal + roughness, albedo + reflectivity, FrameConstants UBO, the frame's view-projection,
+//            optionally the world motion (kWorldMotionFormat)
 //   outputs: output() (RGBA16F: rgb = denoised, faded reflection; a = history length, 0 non-reflective)
 #include "core/math.h"
 #include "gl/gl_objects.h"
@@ -31,6 +34,7 @@ struct DenoiserInputs {
   GLuint albedo_reflectivity = 0;     // kAlbedoReflectivityFormat
   GLuint frame_constants = 0;         // uniform buffer (camera, reflection sampling)
   mat4 view_projection{1.0f};         // this frame's, kept as the next frame's previous one
+  GLuint world_motion = 0;            // kWorldMotionFormat (SurfaceMotion); 0: nothing moved by itself
 };
 
 class ReflectionDenoiser {
@@ -45,7 +49,7 @@ public:
 
   GLuint output() const { return filtered_[last_output_].id(); }
   GLuint accumulated() const { return history_[current_ ^ 1].id(); }  // the last temporal result
-  // The last run's camera motion per pixel (rows bottom first): where the pixel's surface was on the
+  // The last run's motion per pixel (camera and surface; rows bottom first): where the pixel's surface was on the
   // previous frame's screen, in pixels (centres at +0.5), or (-1, -1) where the history restarted
   // (no history, disocclusion, a mirror, a non-reflective pixel). Waits for the GPU (tests).
   std::vector<vec2> read_motion() const;
