@@ -1,14 +1,13 @@
 #include "app/bench/adaptive_experiment.h"
 
-#include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_summary.h"
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
+#include "app/bench/reflection_cost.h"
 #include "app/frame_loop.h"
 #include "app/output_folder.h"
 #include "app/render_command.h"
-#include "backends/registry.h"
 #include "core/atomic_file.h"
 #include "core/csv_writer.h"
 #include "core/error.h"
@@ -48,12 +47,6 @@ struct AdaptivePoint {
   double reflection_ms() const { return ssr_ms + ray_list_ms + trace_ms + hit_shade_ms + classify_ms; }
 };
 
-std::string first_available_backend(const BenchOptions& options) {
-  for (const std::string& backend : parse_name_list("--backends", options.backends, backends::backend_names()))
-    if (!backend_unavailable_reason(backend)) return backend;
-  fail("--backends: none of {} can run here", options.backends);
-}
-
 RenderOptions render_options(const std::string& scene, const AdaptiveConfig& config, const std::string& backend,
                              const BenchOptions& options) {
   RenderOptions render;
@@ -73,21 +66,15 @@ RenderOptions render_options(const std::string& scene, const AdaptiveConfig& con
 }
 
 AdaptivePoint measured_point(const FrameMeasurement& frame) {
+  const ReflectionCost cost = reflection_cost(frame);
   AdaptivePoint point;
-  for (const PassTime& pass : frame.times.passes) {
-    if (pass.name == "ssr") point.ssr_ms += pass.milliseconds;
-    if (pass.name == "ray_list") point.ray_list_ms += pass.milliseconds;
-    if (pass.name == "hit_shade") point.hit_shade_ms += pass.milliseconds;
-    if (pass.name == "classify") point.classify_ms += pass.milliseconds;
-  }
-  if (frame.ray_stats) {
-    point.trace_ms = frame.ray_stats->trace_ms;
-    point.rays = frame.ray_stats->rays_traced;
-  }
-  point.reflective = frame.adaptive       ? frame.adaptive->reflective_pixels
-                     : frame.ssr_counts   ? frame.ssr_counts->reflective
-                     : frame.ray_stats    ? frame.ray_stats->reflective_pixels
-                                          : 0.0;
+  point.ssr_ms = cost.ssr_ms;
+  point.ray_list_ms = cost.ray_list_ms;
+  point.trace_ms = cost.trace_ms;
+  point.hit_shade_ms = cost.hit_shade_ms;
+  point.classify_ms = cost.classify_ms;
+  point.rays = cost.rays;
+  point.reflective = cost.reflective;
   return point;
 }
 
@@ -129,7 +116,7 @@ std::vector<bool> pareto_front(const std::vector<double>& cost, const std::vecto
 
 int run_adaptive_experiment(const BenchOptions& options) {
   const fs::path out = options.out;
-  const std::string backend = first_available_backend(options);
+  const std::string backend = first_available_backend(options.backends);
   const std::vector<AdaptiveConfig> configs = adaptive_configs(options.width, options.height);
   std::vector<std::string> scene_names{options.scene};
   if (options.simple_scene != options.scene) scene_names.push_back(options.simple_scene);
