@@ -10,16 +10,21 @@
 //   x max(n_p . n_q, 0)^normal_power                     same orientation (normal edges)
 //   x exp(-|roughness_p - roughness_q| / roughness_sigma) same lobe width
 // over reflective taps only, normalised (a constant stays constant). a (history length) passes through.
-// An iteration whose step is >= 3 s passes the pixel through (its taps would weigh < 1 %).
+// Taps 3 s or more away weigh less than exp(-4.5) (1.1 %) of the centre's Gaussian factor and are
+// not fetched: a converged rough pixel (s ~ 0.6) reads its 3 x 3 taps only, and an iteration whose
+// step is >= 3 s passes the pixel through.
+// The taps' position, normal, roughness and reflective flag come from the guide the temporal pass
+// wrote (include/denoiser_guide.glsl: one fetch a tap); the centre's normal and roughness are the
+// G-buffer's own.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
 #include "include/glossy_sampling.glsl"
+#include "include/denoiser_guide.glsl"
 
 layout(binding = 0) uniform sampler2D source;
-layout(binding = 1) uniform sampler2D world_position;
+layout(binding = 1) uniform usampler2D guide;
 layout(binding = 2) uniform sampler2D world_normal_roughness;
-layout(binding = 3) uniform sampler2D albedo_reflectivity;
 layout(binding = 0, rgba16f) uniform writeonly image2D filtered;
 
 uniform int step;
@@ -30,45 +35,43 @@ uniform float roughness_sigma;
 
 const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
 
-bool reflective(ivec2 p) {
-  return texelFetch(world_position, p, 0).w != 0.0 && texelFetch(albedo_reflectivity, p, 0).a > 0.0;
-}
-
 void main() {
   const ivec2 size = textureSize(source, 0);
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
   const vec4 centre = texelFetch(source, pixel, 0);
-  if (!reflective(pixel)) {
+  const uvec4 own = texelFetch(guide, pixel, 0);
+  if (!guide_reflective(own)) {
     imageStore(filtered, pixel, centre);
     return;
   }
-  const vec3 position = texelFetch(world_position, pixel, 0).xyz;
   const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
-  const vec3 normal = normalize(normal_roughness.xyz);
   const float roughness = glossy_roughness(normal_roughness.w);
   const float sigma = max_sigma * sqrt(min(roughness / 0.5, 1.0)) / sqrt(max(centre.a, 1.0));
-  // Taps 3 sigma or more away weigh less than exp(-4.5) x the centre's kernel weight: an iteration
-  // whose step is that long is skipped (most of the polished floor skips steps 2 and 4).
   if (sigma <= 0.0 || float(step) >= 3.0 * sigma) {
     imageStore(filtered, pixel, centre);
     return;
   }
+  const vec3 position = guide_position(own);
+  const vec3 normal = normalize(normal_roughness.xyz);
+  const float roughness_key = guide_roughness(own);  // quantised like the taps': equal for one material
+  const float reach = 9.0 * sigma * sigma;          // (3 s)^2
   const float plane_scale = 1.0 / (depth_sigma * max(distance(camera_position.xyz, position), 1e-6));
   vec3 sum = vec3(0.0);
   float weight_sum = 0.0;
   for (int j = -2; j <= 2; ++j)
     for (int i = -2; i <= 2; ++i) {
       const ivec2 offset = ivec2(i, j) * step;
-      const ivec2 q = pixel + offset;
-      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size)) || !reflective(q)) continue;
-      const vec4 q_normal_roughness = texelFetch(world_normal_roughness, q, 0);
-      const vec3 q_normal = normalize(q_normal_roughness.xyz);
-      const float plane = abs(dot(normal, texelFetch(world_position, q, 0).xyz - position)) * plane_scale;
       const float d2 = float(offset.x * offset.x + offset.y * offset.y);
+      if (d2 >= reach) continue;
+      const ivec2 q = pixel + offset;
+      if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+      const uvec4 tap = texelFetch(guide, q, 0);
+      if (!guide_reflective(tap)) continue;
+      const float plane = abs(dot(normal, guide_position(tap) - position)) * plane_scale;
       const float w = kB3[abs(i)] * kB3[abs(j)] * exp(-d2 / (2.0 * sigma * sigma)) * exp(-plane) *
-                      pow(max(dot(normal, q_normal), 0.0), normal_power) *
-                      exp(-abs(roughness - glossy_roughness(q_normal_roughness.w)) / roughness_sigma);
+                      pow(max(dot(normal, guide_normal(tap)), 0.0), normal_power) *
+                      exp(-abs(roughness_key - guide_roughness(tap)) / roughness_sigma);
       sum += w * texelFetch(source, q, 0).rgb;
       weight_sum += w;
     }

@@ -1,5 +1,6 @@
 #include "render/reflection_denoiser.h"
 
+#include "core/error.h"
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
 #include "render/compute_dispatch.h"
@@ -14,11 +15,10 @@ namespace glint::render {
 namespace {
 
 constexpr GLenum kHistoryFormat = GL_RGBA16F;
+constexpr GLenum kGuideFormat = GL_RGBA32UI;  // include/denoiser_guide.glsl
 constexpr GLuint kMotionBinding = 24;  // storage binding of the motion buffer (reflection_temporal.comp.glsl)
-
-void copy_texture(GLuint from, GLuint to, int width, int height) {
-  glCopyImageSubData(from, GL_TEXTURE_2D, 0, 0, 0, 0, to, GL_TEXTURE_2D, 0, 0, 0, 0, width, height, 1);
-}
+// Between the passes of one run: the next pass fetches (texelFetch) what the last one stored.
+constexpr GLbitfield kBetweenPasses = GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
 
 }  // namespace
 
@@ -31,12 +31,20 @@ ReflectionDenoiser::ReflectionDenoiser(int width, int height)
   for (int i = 0; i < 2; ++i) {
     history_[i] = create_texture_2d(kHistoryFormat, width, height);
     filtered_[i] = create_texture_2d(kHistoryFormat, width, height);
+    guide_[i] = create_texture_2d(kGuideFormat, width, height);
+    // An integer texture with a filtering (the default) minification filter is incomplete: fetches give 0.
+    glTextureParameteri(guide_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(guide_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  previous_position_ = create_texture_2d(kWorldPositionFormat, width, height);
-  previous_normal_ = create_texture_2d(kWorldNormalRoughnessFormat, width, height);
-  motion_ = create_buffer(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * sizeof(vec2), nullptr,
-                          GL_DYNAMIC_STORAGE_BIT);
   check_gl("reflection denoiser: set-up");
+}
+
+void ReflectionDenoiser::record_motion(bool on) {
+  if (on && motion_.id() == 0)
+    motion_ = create_buffer(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * sizeof(vec2),
+                            nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (!on) motion_ = GlBuffer();
+  check_gl("reflection denoiser: motion buffer");
 }
 
 void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings& settings) {
@@ -54,34 +62,39 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   const DenoiseSettings& d = settings.denoiser;
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
 
-  // Temporal: history_[current_ ^ 1] (last frame's) -> history_[current_].
+  // Temporal: history_[current_ ^ 1] (last frame's) -> history_[current_]; this frame's guide into
+  // guide_[current_], last frame's read from guide_[current_ ^ 1].
   temporal_.set_uniform("previous_view_projection", previous_view_projection_);
   temporal_.set_uniform("has_history", has_history_ ? 1 : 0);
+  temporal_.set_uniform("has_motion", inputs.world_motion != 0 ? 1 : 0);
+  temporal_.set_uniform("record_motion", motion_.id() != 0 ? 1 : 0);
   temporal_.set_uniform("max_history", d.max_history);
   temporal_.set_uniform("clamp_sigma", d.clamp_sigma);
   temporal_.set_uniform("depth_tolerance", d.depth_tolerance);
   temporal_.set_uniform("fade_start", settings.fade_start);
   temporal_.set_uniform("fade_end", settings.fade_end);
-  temporal_.set_uniform("has_motion", inputs.world_motion != 0 ? 1 : 0);
   glBindTextureUnit(0, inputs.reflection);
   glBindTextureUnit(1, inputs.world_position);
   glBindTextureUnit(2, inputs.world_normal_roughness);
   glBindTextureUnit(3, inputs.albedo_reflectivity);
   glBindTextureUnit(4, history_[current_ ^ 1].id());
-  glBindTextureUnit(5, previous_position_.id());
-  glBindTextureUnit(6, previous_normal_.id());
-  glBindTextureUnit(7, inputs.world_motion);
+  glBindTextureUnit(5, guide_[current_ ^ 1].id());
+  glBindTextureUnit(6, inputs.world_motion);
   glBindImageTexture(0, history_[current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kHistoryFormat);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionBinding, motion_.id());
+  glBindImageTexture(1, guide_[current_].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kGuideFormat);
+  if (motion_.id() != 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionBinding, motion_.id());
+  motion_recorded_ = motion_.id() != 0;
   temporal_.use();
   dispatch_over_image(w, h);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+  glMemoryBarrier(kBetweenPasses);
 
   // Spatial: a-trous iterations, ping-pong through filtered_.
   spatial_.set_uniform("max_sigma", d.max_sigma);
   spatial_.set_uniform("depth_sigma", d.depth_sigma);
   spatial_.set_uniform("normal_power", d.normal_power);
   spatial_.set_uniform("roughness_sigma", d.roughness_sigma);
+  glBindTextureUnit(1, guide_[current_].id());
+  glBindTextureUnit(2, inputs.world_normal_roughness);
   GLuint source = history_[current_].id();
   for (int i = 0; i < d.iterations; ++i) {
     const int target = i % 2;
@@ -90,22 +103,23 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
     glBindImageTexture(0, filtered_[target].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kHistoryFormat);
     spatial_.use();
     dispatch_over_image(w, h);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(kBetweenPasses);
     source = filtered_[target].id();
     last_output_ = target;
   }
+  // Later readers: the resolve's image loads, readbacks of the outputs.
+  glMemoryBarrier(kBetweenPasses | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
   // This frame becomes the next one's history.
-  copy_texture(inputs.world_position, previous_position_.id(), w, h);
-  copy_texture(inputs.world_normal_roughness, previous_normal_.id(), w, h);
   previous_view_projection_ = inputs.view_projection;
   has_history_ = true;
   current_ ^= 1;
-  for (GLuint unit = 0; unit < 8; ++unit) glBindTextureUnit(unit, 0);
+  for (GLuint unit = 0; unit < 7; ++unit) glBindTextureUnit(unit, 0);
   check_gl("reflection denoiser");
 }
 
 std::vector<vec2> ReflectionDenoiser::read_motion() const {
+  if (!motion_recorded_) fail("reflection denoiser: read_motion() without record_motion(true) before the run");
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<vec2> motion(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
   glGetNamedBufferSubData(motion_.id(), 0, static_cast<GLsizeiptr>(motion.size() * sizeof(vec2)), motion.data());

@@ -5,7 +5,9 @@
 //     reprojected by the camera's motion (the previous frame's view-projection); history taps that
 //     are not the same surface (plane distance, normal) are dropped, none left = disocclusion, the
 //     history restarts; the history is clamped to the 3x3 neighbourhood's mean +- k deviations;
-//     mirrors (roughness 0) pass through
+//     mirrors (roughness 0) pass through. It also writes each pixel's guide (position, normal,
+//     roughness, reflective; include/denoiser_guide.glsl), which the spatial passes read and the next
+//     frame reads as the previous surface
 //   spatial (shaders/reflection_spatial.comp.glsl): `iterations` a-trous passes (steps 1, 2, 4)
 //     weighted by a roughness footprint, plane distance, normals and roughness
 // Geometry that moves by itself (the deforming meshes) is reprojected by its own motion too: the
@@ -49,9 +51,13 @@ public:
 
   GLuint output() const { return filtered_[last_output_].id(); }
   GLuint accumulated() const { return history_[current_ ^ 1].id(); }  // the last temporal result
-  // The last run's motion per pixel (camera and surface; rows bottom first): where the pixel's surface was on the
-  // previous frame's screen, in pixels (centres at +0.5), or (-1, -1) where the history restarted
-  // (no history, disocclusion, a mirror, a non-reflective pixel). Waits for the GPU (tests).
+  // On: later runs also record every pixel's motion for read_motion() (tests; off by default, it
+  // costs a write of 8 bytes a pixel).
+  void record_motion(bool on);
+  // The last run's motion per pixel (camera and surface; rows bottom first): where the pixel's
+  // surface was on the previous frame's screen, in pixels (centres at +0.5), or (-1, -1) where the
+  // history restarted (no history, disocclusion, a mirror, a non-reflective pixel). Needs
+  // record_motion(true) before that run (glint::Error otherwise). Waits for the GPU (tests).
   std::vector<vec2> read_motion() const;
   int width() const { return width_; }
   int height() const { return height_; }
@@ -62,13 +68,13 @@ private:
   int width_, height_;
   GlTexture history_[2];  // RGBA16F ping-pong: rgb, a = history length
   GlTexture filtered_[2];
-  GlTexture previous_position_;  // the previous frame's G-buffer copies
-  GlTexture previous_normal_;
-  GlBuffer motion_;
+  GlTexture guide_[2];  // RGBA32UI ping-pong: this frame's guide, the previous frame's
+  GlBuffer motion_;     // with record_motion(true)
   int current_ = 0;
   int last_output_ = 0;
   mat4 previous_view_projection_{1.0f};
   bool has_history_ = false;
+  bool motion_recorded_ = false;  // the last run recorded motion_
 };
 
 }  // namespace glint::render

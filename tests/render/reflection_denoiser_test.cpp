@@ -166,6 +166,7 @@ TEST_F(ReflectionDenoiserTest, CameraMotionVectorsFindEachPixelsPreviousPosition
   const Frame previous = make_frame(scene, before, 0.5f);
   const Frame current = make_frame(scene, after, 0.5f);
   ReflectionDenoiser denoiser(kWidth, kHeight);
+  denoiser.record_motion(true);
   const std::vector<vec4> input(static_cast<std::size_t>(kWidth * kHeight), vec4(0.5f, 0.5f, 0.5f, 1.0f));
   run(denoiser, previous, input, no_fade());
   run(denoiser, current, input, no_fade());

@@ -108,6 +108,8 @@ TEST_P(SurfaceMotionTest, DeformedPlateReprojectsToWhereItsSurfaceWas) {
   const FrameState frame = camera(vec3(0.0f, 3.5f, 4.5f));  // a still camera: only the plate moves
   const GlTexture reflection = constant_reflection();
   ReflectionDenoiser with_motion(kWidth, kHeight), camera_only(kWidth, kHeight);
+  with_motion.record_motion(true);
+  camera_only.record_motion(true);
 
   render_frame(raster, frame);
   denoise(raster, reflection, with_motion, true);
@@ -179,6 +181,8 @@ TEST_P(SurfaceMotionTest, StaticGeometryKeepsExactlyTheCameraOnlyResult) {
   RasterPipeline raster = make_raster(s.scene);
   const GlTexture reflection = constant_reflection();
   ReflectionDenoiser with_motion(kWidth, kHeight), camera_only(kWidth, kHeight);
+  with_motion.record_motion(true);
+  camera_only.record_motion(true);
   const vec3 eyes[3] = {vec3(0.0f, 3.5f, 4.5f), vec3(0.3f, 3.4f, 4.4f), vec3(0.5f, 3.2f, 4.6f)};
   for (const vec3& eye : eyes) {
     render_frame(raster, camera(eye));
