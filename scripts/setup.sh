@@ -10,6 +10,8 @@ packages=(
   # libraries (third-party code comes only from these packages)
   libglm-dev libstb-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
   libcli11-dev libfmt-dev libtbb-dev libembree-dev
+  # linear HDR images: glint render --format exr, glint compare on EXR
+  libopenexr-dev
   # OpenGL: headless EGL on Mesa llvmpipe, GL loader, windowed viewer
   libegl-dev libopengl-dev libgl-dev libgl1-mesa-dri libegl-mesa0 libepoxy-dev
   libglfw3-dev libimgui-dev

@@ -21,6 +21,12 @@ std::string frame_stem(int frame) {
   return fmt::format("frame_{:05}", frame);
 }
 
+// The image formats a run writes; the extension without its dot.
+std::string_view checked_extension(std::string_view extension) {
+  if (extension != "png" && extension != "exr") fail("output folder: no image format '{}' (png or exr)", extension);
+  return extension;
+}
+
 bool is_view_name_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-';
 }
@@ -51,7 +57,7 @@ void require_writable(const std::filesystem::path& folder) {
 
 bool is_run_output_name(std::string_view name) {
   if (name == "run.json" || name == "timings.csv" || name == "scopes.csv" || name == "walkthrough.mp4") return true;
-  if (name.starts_with("frame_") && name.ends_with(".png")) return true;
+  if (name.starts_with("frame_") && (name.ends_with(".png") || name.ends_with(".exr"))) return true;
   return name.starts_with('.') && name.find(".tmp-") != std::string_view::npos;
 }
 
@@ -89,15 +95,19 @@ OutputFolder::~OutputFolder() {
   if (std::filesystem::is_empty(path_, ignored) && !ignored) std::filesystem::remove(path_, ignored);
 }
 
-std::filesystem::path OutputFolder::frame_path(int frame) const { return path_ / (frame_stem(frame) + ".png"); }
+std::filesystem::path OutputFolder::frame_path(int frame, std::string_view extension) const {
+  return path_ / fmt::format("{}.{}", frame_stem(frame), checked_extension(extension));
+}
 
-std::filesystem::path OutputFolder::debug_view_path(int frame, std::string_view view) const {
+std::filesystem::path OutputFolder::debug_view_path(int frame, std::string_view view,
+                                                    std::string_view extension) const {
   if (view.empty() || !std::all_of(view.begin(), view.end(), is_view_name_char))
     fail("debug view name '{}' must be letters, digits, '_' or '-'", view);
   std::string name = frame_stem(frame);
   name += '_';
   name += view;
-  name += ".png";
+  name += '.';
+  name += checked_extension(extension);
   return path_ / name;
 }
 

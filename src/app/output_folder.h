@@ -3,6 +3,7 @@
 // that every command and script agrees on them:
 //   frame_00042.png           the final image of frame 42 (5 digits; more when the frame needs them)
 //   frame_00042_<view>.png    a debug view of frame 42 (e.g. "ssr_mask", "normals")
+//   frame_00042.exr, ...      the same as linear EXRs (`glint render --format exr`)
 //   <name>                    anything else the run writes there (timings.csv, run.json, video.mp4)
 // Zero-padded names sort in frame order in every file browser and in `ffmpeg -i frame_%05d.png`.
 //
@@ -34,11 +35,11 @@ public:
 
   const std::filesystem::path& path() const { return path_; }
 
-  // A negative frame is a glint::Error.
-  std::filesystem::path frame_path(int frame) const;
+  // A negative frame is a glint::Error. `extension`: "png" or "exr" (anything else is a glint::Error).
+  std::filesystem::path frame_path(int frame, std::string_view extension = "png") const;
   // `view` must be non-empty and made of letters, digits, '_' and '-' only, so a name can neither
   // leave the folder nor be mistaken for another frame's file.
-  std::filesystem::path debug_view_path(int frame, std::string_view view) const;
+  std::filesystem::path debug_view_path(int frame, std::string_view view, std::string_view extension = "png") const;
   // A plain file name in the folder; it must not be empty or contain '/', nor be "." or "..".
   std::filesystem::path file(std::string_view name) const;
 
@@ -47,7 +48,8 @@ private:
   bool created_ = false;
 };
 
-// Whether `name` is one of the files a run writes (run.json, timings.csv, scopes.csv, walkthrough.mp4, frame_*.png)
+// Whether `name` is one of the files a run writes (run.json, timings.csv, scopes.csv, walkthrough.mp4, frame_*.png,
+// frame_*.exr)
 // or a temporary left by one (".<name>.tmp-<pid>-<n>", see core/atomic_file.h).
 bool is_run_output_name(std::string_view name);
 

@@ -15,9 +15,11 @@ void require_same_size(const Image<Pixel>& test, const Image<Pixel>& reference, 
          test.width, test.height);
 }
 
-// The two pixel types the metrics use: 8-bit files and the double planes derived from them.
+// The pixel types the metrics use: 8-bit files, linear EXR colour and the double planes derived from them.
 template void require_same_size(const Image<glm::u8vec4>&, const Image<glm::u8vec4>&, std::string_view,
                                 std::string_view);
 template void require_same_size(const Image<double>&, const Image<double>&, std::string_view, std::string_view);
+template void require_same_size(const Image<glm::vec4>&, const Image<glm::vec4>&, std::string_view,
+                                std::string_view);
 
 }  // namespace glint::metrics

@@ -36,15 +36,40 @@ ImageRgba8 position_view(const ImageRgbaF& world_position, const Aabb& world_bou
 }
 
 ImageRgba8 depth_view(const ImageRgbaF& world_position, const FrameConstants& frame) {
-  // The camera looks down -z in view space, so depth is -z.
-  const auto depth_of = [&](const vec4& p) { return -(frame.view * vec4(vec3(p), 1.0f)).z; };
+  const ImageRgbaF depth = view_depth(world_position, frame);
   float farthest = 0.0f;
-  for (const vec4& p : world_position.pixels)
-    if (!is_background(p)) farthest = std::max(farthest, depth_of(p));
-  return map_pixels(world_position, [&](const vec4& p) {
-    if (is_background(p) || farthest <= 0.0f) return vec3(0.0f);
-    return vec3(std::clamp(1.0f - depth_of(p) / farthest, 0.0f, 1.0f));
+  for (const vec4& p : depth.pixels) farthest = std::max(farthest, p.x);
+  return map_pixels(depth, [&](const vec4& p) {
+    if (p.x <= 0.0f || farthest <= 0.0f) return vec3(0.0f);  // background, or nothing in front
+    return vec3(std::clamp(1.0f - p.x / farthest, 0.0f, 1.0f));
   });
+}
+
+ImageRgbaF opaque(ImageRgbaF image) {
+  for (vec4& p : image.pixels) p.w = 1.0f;
+  return image;
+}
+
+ImageRgbaF view_depth(const ImageRgbaF& world_position, const FrameConstants& frame) {
+  ImageRgbaF depth(world_position.width, world_position.height, vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  for (std::size_t i = 0; i < depth.pixels.size(); ++i) {
+    const vec4& p = world_position.pixels[i];
+    // The camera looks down -z in view space, so depth is -z.
+    if (!is_background(p)) depth.pixels[i] = vec4(vec3(-(frame.view * vec4(vec3(p), 1.0f)).z), 1.0f);
+  }
+  return depth;
+}
+
+ImageRgbaF red_as_grey(const ImageRgbaF& image) {
+  ImageRgbaF grey(image.width, image.height);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) grey.pixels[i] = vec4(vec3(image.pixels[i].x), 1.0f);
+  return grey;
+}
+
+ImageRgbaF unit_colours(const ImageRgba8& image) {
+  ImageRgbaF colours(image.width, image.height);
+  for (std::size_t i = 0; i < image.pixels.size(); ++i) colours.pixels[i] = vec4(image.pixels[i]) / 255.0f;
+  return colours;
 }
 
 ImageRgba8 grey_view(const ImageRgbaF& image) {

@@ -32,4 +32,13 @@ ImageRgba8 tile_class_view(std::span<const TileClass> classes, int tile_columns,
 // SSR wrote it in its own tiles only, so rays-only tiles become 1 and tiles without reflection 0.
 void mark_traced_tiles(ImageRgbaF& failure_mask, std::span<const TileClass> classes, int tile_columns);
 
+// The linear values behind the views, for `glint render --format exr` (DebugView::linear), a = 1:
+// albedo, normals, positions and reflections as stored (world units, linear radiance, background 0);
+// the view depth (distance along the view axis, background 0) and masks as grey; the tile classes'
+// colours / 255.
+ImageRgbaF opaque(ImageRgbaF image);  // the same rgb with a = 1
+ImageRgbaF view_depth(const ImageRgbaF& world_position, const FrameConstants& frame);
+ImageRgbaF red_as_grey(const ImageRgbaF& image);
+ImageRgbaF unit_colours(const ImageRgba8& image);  // 8-bit colours as 0..1
+
 }  // namespace glint::render

@@ -10,7 +10,7 @@ namespace glint::render {
 namespace {
 
 // Image units of resolve.comp.glsl.
-constexpr GLuint kLitUnit = 0, kAlbedoUnit = 1, kReflectionUnit = 2, kFinalUnit = 3;
+constexpr GLuint kLitUnit = 0, kAlbedoUnit = 1, kReflectionUnit = 2, kFinalUnit = 3, kLinearUnit = 4;
 
 }  // namespace
 
@@ -27,7 +27,15 @@ void ResolvePass::resize(int width, int height) {
     denoiser_.reset();
   }
   final_ = create_texture_2d(kFinalFormat, width, height);
+  if (linear_.id() != 0) linear_ = create_texture_2d(kLinearColourFormat, width, height);
   check_gl("resolve: create final image");
+}
+
+void ResolvePass::set_linear_output(bool on) {
+  if (on == (linear_.id() != 0)) return;
+  linear_ = on ? create_texture_2d(kLinearColourFormat, width(), height()) : GlTexture();
+  program_.set_uniform("store_linear", on ? 1 : 0);
+  check_gl("resolve: create linear image");
 }
 
 void ResolvePass::set_settings(const ResolveSettings& settings) {
@@ -48,7 +56,7 @@ void ResolvePass::run(const ResolveInputs& inputs) {
   if (settings_.denoise) {
     if (!denoiser_) denoiser_.emplace(w, h);
     denoiser_->run({inputs.reflection, inputs.world_position, inputs.world_normal_roughness, inputs.albedo_reflectivity,
-                    inputs.frame_constants, inputs.view_projection},
+                    inputs.frame_constants, inputs.view_projection, inputs.world_motion},
                    settings_);
     filtered = denoiser_->output();
   } else {
@@ -60,6 +68,8 @@ void ResolvePass::run(const ResolveInputs& inputs) {
   glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
   glBindImageTexture(kReflectionUnit, filtered, 0, GL_FALSE, 0, GL_READ_ONLY, kReflectionFormat);
   glBindImageTexture(kFinalUnit, final_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFinalFormat);
+  if (linear_.id() != 0)
+    glBindImageTexture(kLinearUnit, linear_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kLinearColourFormat);
   program_.use();
   dispatch_over_image(w, h);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
