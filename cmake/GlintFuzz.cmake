@@ -54,6 +54,8 @@ function(glint_add_fuzz_build)
   file(GLOB GLINT_FUZZ_LOADER_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/core/*.cpp
        ${CMAKE_SOURCE_DIR}/src/scene/*.cpp)
   list(FILTER GLINT_FUZZ_LOADER_SOURCES EXCLUDE REGEX ".*/src/scene/(load_scene|presets|sponza_preset|sine_deformer)\\.cpp$")
+  # OpenEXR (core/exr_image): render output and glint compare only, no loader reads EXRs.
+  list(FILTER GLINT_FUZZ_LOADER_SOURCES EXCLUDE REGEX ".*/src/core/exr_image\\.cpp$")
   add_library(glint_fuzz_loaders STATIC ${GLINT_FUZZ_LOADER_SOURCES} ${CMAKE_SOURCE_DIR}/fuzz/third_party_implementations.cpp)
   target_compile_options(glint_fuzz_loaders PRIVATE -fsanitize=fuzzer-no-link)
   target_include_directories(glint_fuzz_loaders SYSTEM PRIVATE ${STB_INCLUDE_DIRS})
