@@ -1,10 +1,11 @@
 #include "accel/builders/builder.h"
 #include "accel/trace.h"
 #include "core/error.h"
-#include "test_scenes.h"
+#include "accel/brute_force_check.h"
 
 #include <gtest/gtest.h>
 
+#include <span>
 #include <string>
 #include <tuple>
 
@@ -13,67 +14,35 @@ namespace {
 
 using testing::TestMesh;
 
-using Reference = testing::BruteForceReference;
-
-const Reference& soup_reference() {
-  static const Reference reference = [] {
-    TestMesh soup = testing::make_random_soup(21, 3000);
-    std::vector<Ray> rays = testing::make_random_rays(soup, 22, 12000);
-    return Reference(std::move(soup), std::move(rays));
-  }();
-  return reference;
-}
-
-const Reference& grid_reference() {
-  static const Reference reference = [] {
-    testing::StackedGrids grids = testing::make_stacked_grids(24, 23, 24);
-    return Reference(std::move(grids.mesh), std::move(grids.rays));
-  }();
-  return reference;
-}
-
-const Reference& axis_reference() {
-  static const Reference reference = [] {
-    TestMesh soup = testing::make_random_soup(25, 2000);
-    std::vector<Ray> rays = testing::make_axis_parallel_rays(soup, 26, 10000);
-    return Reference(std::move(soup), std::move(rays));
-  }();
-  return reference;
-}
-
 using TraceParam = std::tuple<BvhBuilder, uint32_t>;
 
 class TraversalMatchesBruteForce : public ::testing::TestWithParam<TraceParam> {
 protected:
-  void check(const Reference& reference, bool expect_all_hit) {
+  void check(const testing::BruteForceReference& reference, const testing::BruteForceExpectations& expectations) {
     const auto [builder, leaf_size] = GetParam();
     BuildOptions options;
     options.max_leaf_size = leaf_size;
     const TriangleMesh mesh = reference.mesh.view();
     const Bvh bvh = build_bvh(builder, mesh, options);
-    std::vector<Hit> hits(reference.rays.size());
-    std::vector<uint8_t> occluded(reference.rays.size());
-    trace_closest(bvh, mesh, reference.rays, hits);
-    trace_any(bvh, mesh, reference.rays, occluded);
-    size_t failures = 0, hit_count = 0;
-    for (size_t i = 0; i < reference.rays.size() && failures < 10; ++i) {
-      const auto same = testing::same_closest_hit(reference.closest[i], hits[i]);
-      EXPECT_TRUE(same) << "ray " << i;
-      EXPECT_EQ(occluded[i], reference.occluded[i]) << "ray " << i;
-      EXPECT_EQ(reference.occluded[i] != 0, reference.closest[i].valid()) << "ray " << i;
-      if (expect_all_hit) {
-        EXPECT_TRUE(hits[i].valid()) << "ray " << i << " slipped through";
-      }
-      failures += same ? 0 : 1;
-      hit_count += hits[i].valid() ? 1 : 0;
-    }
-    EXPECT_GT(hit_count, reference.rays.size() / 4);  // the rays do test something
+    testing::expect_brute_force_answers(
+        reference,
+        [&](std::span<const Ray> rays, std::span<Hit> hits, std::span<uint8_t> occluded) {
+          trace_closest(bvh, mesh, rays, hits);
+          trace_any(bvh, mesh, rays, occluded);
+        },
+        expectations);
   }
 };
 
-TEST_P(TraversalMatchesBruteForce, RandomSoup) { check(soup_reference(), false); }
-TEST_P(TraversalMatchesBruteForce, GridEdgesAndVerticesAreWatertight) { check(grid_reference(), true); }
-TEST_P(TraversalMatchesBruteForce, AxisParallelRays) { check(axis_reference(), false); }
+TEST_P(TraversalMatchesBruteForce, RandomSoup) {
+  check(testing::built_once([] { return testing::make_soup_reference(21, 3000, 12000); }), {});
+}
+TEST_P(TraversalMatchesBruteForce, GridEdgesAndVerticesAreWatertight) {
+  check(testing::built_once([] { return testing::make_grids_reference(24, 23); }), {.every_ray_hits = true});
+}
+TEST_P(TraversalMatchesBruteForce, AxisParallelRays) {
+  check(testing::built_once([] { return testing::make_axis_parallel_reference(25, 2000, 10000); }), {});
+}
 
 // Every builder at every leaf size, except brute force, whose single leaf ignores the leaf size.
 std::vector<TraceParam> trace_params() {
@@ -91,32 +60,15 @@ INSTANTIATE_TEST_SUITE_P(Accel, TraversalMatchesBruteForce, ::testing::ValuesIn(
                          });
 
 TEST(Traversal, RayIntervalIsHonoured) {
-  // Three parallel squares at z = 1, 2, 3 (two triangles each), ray down the z axis.
-  TestMesh mesh;
-  for (float z : {1.0f, 2.0f, 3.0f}) {
-    mesh.add_triangle(vec3(-1, -1, z), vec3(1, -1, z), vec3(1, 1, z));
-    mesh.add_triangle(vec3(-1, -1, z), vec3(1, 1, z), vec3(-1, 1, z));
-  }
-  const TriangleMesh view = mesh.view();
+  const TestMesh squares = testing::make_three_squares();
+  const TriangleMesh view = squares.view();
   BuildOptions options;
   options.max_leaf_size = 1;
   const Bvh bvh = build_bvh(BvhBuilder::sah, view, options);
-  const auto closest_t = [&](float t_min, float t_max) {
-    const Ray ray{vec3(0.25f, 0.5f, 0.0f), t_min, vec3(0, 0, 1), t_max};
-    Hit hit;
-    trace_closest(bvh, view, std::span(&ray, 1), std::span(&hit, 1));
-    uint8_t occluded = 0;
-    trace_any(bvh, view, std::span(&ray, 1), std::span(&occluded, 1));
-    EXPECT_EQ(occluded != 0, hit.valid());
-    return hit.valid() ? hit.t : -1.0f;
-  };
-  EXPECT_EQ(closest_t(0.0f, kInfinity), 1.0f);
-  EXPECT_EQ(closest_t(1.5f, kInfinity), 2.0f);
-  EXPECT_EQ(closest_t(2.0f, kInfinity), 2.0f);  // t_min inclusive
-  EXPECT_EQ(closest_t(2.5f, 2.9f), -1.0f);
-  EXPECT_EQ(closest_t(2.5f, 3.0f), 3.0f);       // t_max inclusive
-  EXPECT_EQ(closest_t(3.5f, kInfinity), -1.0f);
-  EXPECT_EQ(closest_t(0.0f, 0.5f), -1.0f);
+  testing::expect_ray_interval_honoured([&](std::span<const Ray> rays, std::span<Hit> hits, std::span<uint8_t> occluded) {
+    trace_closest(bvh, view, rays, hits);
+    trace_any(bvh, view, rays, occluded);
+  });
 }
 
 TEST(Traversal, HitReportsOriginalTriangleIndexAndInstanceZero) {

@@ -4,7 +4,7 @@
 #include "render/ssr_pass.h"
 
 #include "gl/gl_test_context.h"
-#include "render/synthetic_gbuffer.h"
+#include "render/ssr_test_run.h"
 #include "support/error_of.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +17,7 @@ namespace glint::render {
 namespace {
 
 using testing::CpuGBuffer;
+using testing::reflective;
 using testing::SurfaceHit;
 using testing::SyntheticCamera;
 using testing::SyntheticScene;
@@ -26,29 +27,11 @@ constexpr int kHeight = 48;
 const vec3 kBoxLit{0.9f, 0.2f, 0.1f};
 const vec3 kFloorLit{0.1f, 0.1f, 0.1f};
 
-struct SsrResult {
-  FrameConstants constants;
-  CpuGBuffer cpu;
-  std::vector<vec4> reflection;
-  std::vector<std::uint8_t> mask;
-  SsrCounts counts;
-};
+using SsrResult = testing::SsrRun;
 
 SsrResult run_ssr(const SyntheticScene& scene, const SyntheticCamera& camera, const SsrSettings& settings = {}) {
-  SsrResult result;
-  result.constants = testing::frame_constants_for(camera, kWidth, kHeight, 7);
-  result.cpu = testing::rasterize(scene, result.constants, kWidth, kHeight);
-  const testing::GpuGBuffer gpu = testing::upload(result.cpu, result.constants);
-  SsrPass pass(kWidth, kHeight, settings);
-  pass.run({gpu.albedo_reflectivity.id(), gpu.world_position.id(), gpu.world_normal.id(), gpu.lit.id(),
-            gpu.frame_constants.id()});
-  result.reflection = testing::read_rgba_float(pass.reflection(), kWidth, kHeight);
-  result.mask = testing::read_r8ui(pass.failure_mask(), kWidth, kHeight);
-  result.counts = pass.read_counts();
-  return result;
+  return testing::run_ssr(scene, camera, kWidth, kHeight, 7, settings);
 }
-
-bool reflective(const CpuGBuffer& g, std::size_t i) { return g.quad[i] >= 0 && g.albedo_reflectivity[i].w > 0; }
 
 // Where the mirror ray of pixel i really goes (CPU ray cast from the G-buffer's surface point).
 std::optional<SurfaceHit> mirror_hit(const SyntheticScene& scene, const SsrResult& r, std::size_t i) {
@@ -382,8 +365,7 @@ TEST_F(SsrPassErrors, InvalidSettingsNameTheField) {
 
 TEST_F(SsrPassErrors, InputOfTheWrongSizeOrFormatIsAnError) {
   const FloorAndBox setup;
-  const FrameConstants constants = testing::frame_constants_for(setup.camera, kWidth, kHeight);
-  const testing::GpuGBuffer gpu = testing::upload(testing::rasterize(setup.scene, constants, kWidth, kHeight), constants);
+  const testing::GpuGBuffer gpu = testing::synthetic_frame(setup.scene, setup.camera, kWidth, kHeight).gpu;
   SsrPass pass(kWidth, kHeight);
   const GlTexture small = create_texture_2d(GL_RGBA16F, 32, 32);
   SsrInputs inputs{gpu.albedo_reflectivity.id(), gpu.world_position.id(), gpu.world_normal.id(), small.id(),

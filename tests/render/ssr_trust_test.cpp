@@ -6,7 +6,7 @@
 #include "render/ssr_pass.h"
 
 #include "gl/gl_test_context.h"
-#include "render/synthetic_gbuffer.h"
+#include "render/ssr_test_run.h"
 
 #include <gtest/gtest.h>
 
@@ -19,6 +19,7 @@ namespace glint::render {
 namespace {
 
 using testing::CpuGBuffer;
+using testing::reflective;
 using testing::SyntheticCamera;
 using testing::SyntheticScene;
 
@@ -29,27 +30,11 @@ const vec3 kWallLit{0.1f, 0.7f, 0.2f};
 const vec3 kEndLit{0.2f, 0.3f, 0.8f};
 const vec3 kMirrorLit{0.05f, 0.05f, 0.05f};
 
-struct SsrRun {
-  FrameConstants constants;
-  CpuGBuffer cpu;
-  std::vector<vec4> reflection;
-  std::vector<std::uint8_t> mask;
-};
+using testing::SsrRun;
 
 SsrRun run_ssr(const SyntheticScene& scene, const SyntheticCamera& camera, const SsrSettings& settings = {}) {
-  SsrRun run;
-  run.constants = testing::frame_constants_for(camera, kWidth, kHeight, 3);
-  run.cpu = testing::rasterize(scene, run.constants, kWidth, kHeight);
-  const testing::GpuGBuffer gpu = testing::upload(run.cpu, run.constants);
-  SsrPass pass(kWidth, kHeight, settings);
-  pass.run({gpu.albedo_reflectivity.id(), gpu.world_position.id(), gpu.world_normal.id(), gpu.lit.id(),
-            gpu.frame_constants.id()});
-  run.reflection = testing::read_rgba_float(pass.reflection(), kWidth, kHeight);
-  run.mask = testing::read_r8ui(pass.failure_mask(), kWidth, kHeight);
-  return run;
+  return testing::run_ssr(scene, camera, kWidth, kHeight, 3, settings);
 }
-
-bool reflective(const CpuGBuffer& g, std::size_t i) { return g.quad[i] >= 0 && g.albedo_reflectivity[i].w > 0; }
 
 // A corridor: a mirror wall on the left (x = -2), a far wall on the right (x = 3), an end wall, and
 // a pillar of no thickness at all (one rectangle facing the camera) in front of them. The mirror
@@ -188,8 +173,7 @@ TEST_F(SsrTrustTest, ScaledAndFarMovedScenesHitAndFailOnTheSamePixels) {
 TEST_F(SsrTrustTest, DepthPyramidLevelsHoldTheMinAndMaxOfThePixelsTheyCover) {
   constexpr int width = 37, height = 21;  // odd sizes: the last texel of a row takes three
   const PillarCorridor corridor;
-  const FrameConstants constants = testing::frame_constants_for(corridor.camera, width, height);
-  const testing::GpuGBuffer gpu = testing::upload(testing::rasterize(corridor.scene, constants, width, height), constants);
+  const testing::GpuGBuffer gpu = testing::synthetic_frame(corridor.scene, corridor.camera, width, height).gpu;
   DepthPyramidPass pyramid(width, height);
   pyramid.run({gpu.world_position.id(), gpu.world_normal.id(), gpu.frame_constants.id()});
   ASSERT_EQ(pyramid.levels(), 6);

@@ -2,11 +2,12 @@
 #include "accel/wide/wide_bvh_collapse.h"
 #include "accel/wide/wide_bvh_trace.h"
 #include "core/error.h"
-#include "accel/test_scenes.h"
+#include "accel/brute_force_check.h"
 #include "wide_bvh_test_support.h"
 
 #include <gtest/gtest.h>
 
+#include <span>
 #include <string>
 #include <tuple>
 
@@ -16,52 +17,12 @@ namespace {
 using testing::TestMesh;
 using testing::WideConfig;
 
-using WideReference = testing::BruteForceReference;
-
-const WideReference& soup_reference() {
-  static const WideReference reference = [] {
-    TestMesh soup = testing::make_random_soup(41, 3000);
-    std::vector<Ray> rays = testing::make_random_rays(soup, 42, 12000);
-    return WideReference(std::move(soup), std::move(rays));
-  }();
-  return reference;
-}
-
-const WideReference& clustered_reference() {
-  static const WideReference reference = [] {
-    TestMesh clustered = testing::make_clustered(43, 4000);
-    std::vector<Ray> rays = testing::make_random_rays(clustered, 44, 8000);
-    return WideReference(std::move(clustered), std::move(rays));
-  }();
-  return reference;
-}
-
-const WideReference& grid_reference() {
-  static const WideReference reference = [] {
-    testing::StackedGrids grids = testing::make_stacked_grids(24, 45, 46);
-    return WideReference(std::move(grids.mesh), std::move(grids.rays));
-  }();
-  return reference;
-}
-
-const WideReference& axis_reference() {
-  static const WideReference reference = [] {
-    TestMesh soup = testing::make_random_soup(47, 2000);
-    std::vector<Ray> rays = testing::make_axis_parallel_rays(soup, 48, 10000);
-    return WideReference(std::move(soup), std::move(rays));
-  }();
-  return reference;
-}
-
-const WideReference& interval_reference() {
-  static const WideReference reference = [] {
-    TestMesh soup = testing::make_random_soup(49, 2500);
-    testing::RayOptions options;
-    options.limited_fraction = 1.0f;  // every ray a random [t_min, t_max] segment
-    std::vector<Ray> rays = testing::make_random_rays(soup, 50, 10000, options);
-    return WideReference(std::move(soup), std::move(rays));
-  }();
-  return reference;
+// The closest and any hits of a wide BVH of either width.
+testing::TraceClosestAndAny trace_with(const testing::AnyWideBvh& wide) {
+  return [&wide](std::span<const Ray> rays, std::span<Hit> hits, std::span<uint8_t> occluded) {
+    testing::trace_closest_any_width(wide, rays, hits);
+    testing::trace_any_any_width(wide, rays, occluded);
+  };
 }
 
 // builder, binary leaf size, width + SIMD path, merge small subtrees into one leaf or not.
@@ -69,7 +30,7 @@ using WideParam = std::tuple<BvhBuilder, uint32_t, WideConfig, bool>;
 
 class WideTraversalMatchesBruteForce : public ::testing::TestWithParam<WideParam> {
 protected:
-  void check(const WideReference& reference, bool expect_all_hit) {
+  void check(const testing::BruteForceReference& reference, const testing::BruteForceExpectations& expectations) {
     const auto [builder, leaf_size, config, merge] = GetParam();
     if (config.path == WideSimdPath::avx2 && !cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
     const testing::ScopedWidePath path(config);
@@ -80,35 +41,33 @@ protected:
     const TriangleMesh mesh = reference.mesh.view();
     const Bvh bvh = build_bvh(builder, mesh, options);
     const testing::AnyWideBvh wide = testing::collapse_any(config.width, bvh, mesh, collapse);
-    std::vector<Hit> hits(reference.rays.size());
-    std::vector<uint8_t> occluded(reference.rays.size());
-    testing::trace_closest_any_width(wide, reference.rays, hits);
-    testing::trace_any_any_width(wide, reference.rays, occluded);
-    size_t failures = 0, hit_count = 0;
-    for (size_t i = 0; i < reference.rays.size() && failures < 10; ++i) {
-      const auto same = testing::same_closest_hit(reference.closest[i], hits[i]);
-      EXPECT_TRUE(same) << "ray " << i;
-      EXPECT_EQ(occluded[i], reference.occluded[i]) << "ray " << i;
-      // Any-hit agrees with closest-hit.
-      EXPECT_EQ(occluded[i] != 0, hits[i].valid()) << "ray " << i;
-      if (hits[i].valid()) {
-        EXPECT_EQ(hits[i].instance, 0u);
-      }
-      if (expect_all_hit) {
-        EXPECT_TRUE(hits[i].valid()) << "ray " << i << " slipped through";
-      }
-      failures += same && occluded[i] == reference.occluded[i] ? 0 : 1;
-      hit_count += hits[i].valid() ? 1 : 0;
-    }
-    EXPECT_GT(hit_count, reference.rays.size() / 5);  // the rays do test something
+    testing::expect_brute_force_answers(reference, trace_with(wide), expectations);
   }
 };
 
-TEST_P(WideTraversalMatchesBruteForce, RandomSoup) { check(soup_reference(), false); }
-TEST_P(WideTraversalMatchesBruteForce, Clustered) { check(clustered_reference(), false); }
-TEST_P(WideTraversalMatchesBruteForce, GridEdgesAndVerticesAreWatertight) { check(grid_reference(), true); }
-TEST_P(WideTraversalMatchesBruteForce, AxisParallelRays) { check(axis_reference(), false); }
-TEST_P(WideTraversalMatchesBruteForce, RayIntervals) { check(interval_reference(), false); }
+TEST_P(WideTraversalMatchesBruteForce, RandomSoup) {
+  check(testing::built_once([] { return testing::make_soup_reference(41, 3000, 12000); }), {.min_hit_fraction = 0.2});
+}
+TEST_P(WideTraversalMatchesBruteForce, Clustered) {
+  check(testing::built_once([] { return testing::make_clustered_reference(43, 4000, 8000); }),
+        {.min_hit_fraction = 0.2});
+}
+TEST_P(WideTraversalMatchesBruteForce, GridEdgesAndVerticesAreWatertight) {
+  check(testing::built_once([] { return testing::make_grids_reference(24, 45); }),
+        {.every_ray_hits = true, .min_hit_fraction = 0.2});
+}
+TEST_P(WideTraversalMatchesBruteForce, AxisParallelRays) {
+  check(testing::built_once([] { return testing::make_axis_parallel_reference(47, 2000, 10000); }),
+        {.min_hit_fraction = 0.2});
+}
+TEST_P(WideTraversalMatchesBruteForce, RayIntervals) {
+  check(testing::built_once([] {
+          testing::RayOptions options;
+          options.limited_fraction = 1.0f;  // every ray a random [t_min, t_max] segment
+          return testing::make_soup_reference(49, 2500, 10000, options);
+        }),
+        {.min_hit_fraction = 0.2});
+}
 
 std::vector<WideParam> wide_params() {
   std::vector<WideParam> params;
@@ -137,35 +96,15 @@ protected:
 
 TEST_P(WideTraversal, RayIntervalIsHonouredExactly) {
   const testing::ScopedWidePath path(GetParam());
-  // Three parallel squares at z = 1, 2, 3, ray down the z axis.
-  TestMesh mesh;
-  for (float z : {1.0f, 2.0f, 3.0f}) {
-    mesh.add_triangle(vec3(-1, -1, z), vec3(1, -1, z), vec3(1, 1, z));
-    mesh.add_triangle(vec3(-1, -1, z), vec3(1, 1, z), vec3(-1, 1, z));
-  }
-  const TriangleMesh view = mesh.view();
+  const TestMesh squares = testing::make_three_squares();
+  const TriangleMesh view = squares.view();
   BuildOptions options;
   options.max_leaf_size = 1;
   WideCollapseOptions collapse;
   collapse.merge_leaf_size = 0;
   const testing::AnyWideBvh wide = testing::collapse_any(GetParam().width, build_bvh(BvhBuilder::sah, view, options),
                                                           view, collapse);
-  const auto closest_t = [&](float t_min, float t_max) {
-    const Ray ray{vec3(0.25f, 0.5f, 0.0f), t_min, vec3(0, 0, 1), t_max};
-    Hit hit;
-    testing::trace_closest_any_width(wide, std::span(&ray, 1), std::span(&hit, 1));
-    uint8_t occluded = 0;
-    testing::trace_any_any_width(wide, std::span(&ray, 1), std::span(&occluded, 1));
-    EXPECT_EQ(occluded != 0, hit.valid());
-    return hit.valid() ? hit.t : -1.0f;
-  };
-  EXPECT_EQ(closest_t(0.0f, kInfinity), 1.0f);
-  EXPECT_EQ(closest_t(1.5f, kInfinity), 2.0f);
-  EXPECT_EQ(closest_t(2.0f, kInfinity), 2.0f);  // t_min inclusive
-  EXPECT_EQ(closest_t(2.5f, 2.9f), -1.0f);
-  EXPECT_EQ(closest_t(2.5f, 3.0f), 3.0f);       // t_max inclusive
-  EXPECT_EQ(closest_t(3.5f, kInfinity), -1.0f);
-  EXPECT_EQ(closest_t(0.0f, 0.5f), -1.0f);
+  testing::expect_ray_interval_honoured(trace_with(wide));
 }
 
 TEST_P(WideTraversal, MatchesTheBinaryTraversalOnALargeLeafOfTheNoneBuilder) {
