@@ -9,7 +9,8 @@
 //   x exp(-|n_p . (P_q - P_p)| / (depth_sigma x |P_p - camera|))   same plane (depth edges)
 //   x max(n_p . n_q, 0)^normal_power                     same orientation (normal edges)
 //   x exp(-|roughness_p - roughness_q| / roughness_sigma) same lobe width
-// over reflective taps only, normalised (a constant stays constant). a (history length) passes through.
+// over reflective taps only, normalised (a constant stays constant). a (history length) passes through;
+// non-reflective pixels are 0 (written by the last iteration only).
 // Taps 3 s or more away weigh less than exp(-4.5) (1.1 %) of the centre's Gaussian factor and are
 // not fetched: a converged rough pixel (s ~ 0.6) reads its 3 x 3 taps only, and an iteration whose
 // step is >= 3 s passes the pixel through.
@@ -28,6 +29,7 @@ layout(binding = 2) uniform sampler2D world_normal_roughness;
 layout(binding = 0, rgba16f) uniform writeonly image2D filtered;
 
 uniform int step;
+uniform int last_iteration;  // 1 in the denoiser's last iteration, whose output is every pixel's
 uniform float max_sigma;
 uniform float depth_sigma;
 uniform float normal_power;
@@ -39,12 +41,13 @@ void main() {
   const ivec2 size = textureSize(source, 0);
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
-  const vec4 centre = texelFetch(source, pixel, 0);
   const uvec4 own = texelFetch(guide, pixel, 0);
   if (!guide_reflective(own)) {
-    imageStore(filtered, pixel, centre);
+    // No tap reads a non-reflective pixel: only the last iteration stores its output, 0.
+    if (last_iteration != 0) imageStore(filtered, pixel, vec4(0.0));
     return;
   }
+  const vec4 centre = texelFetch(source, pixel, 0);
   const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
   const float roughness = glossy_roughness(normal_roughness.w);
   const float sigma = max_sigma * sqrt(min(roughness / 0.5, 1.0)) / sqrt(max(centre.a, 1.0));

@@ -10,7 +10,7 @@
 //   n        = min(history length + 1, 1 + (max_history - 1) min(roughness / 0.3, 1)^2)
 //   out      = mix(previous, c, 1 / n)   (near-mirrors keep little history: see below)
 // Mirrors (roughness 0) and pixels without history pass c through (n = 1). Output: rgb, a = n
-// (0 for non-reflective pixels), and every pixel's guide (include/denoiser_guide.glsl) for this
+// (reflective pixels only: no later read takes a non-reflective pixel's), and every pixel's guide (include/denoiser_guide.glsl) for this
 // frame's spatial passes and the next frame's same-surface tests; with record_motion the motion
 // buffer: the previous position (pixels), (-1, -1) when the history restarted.
 //
@@ -81,8 +81,7 @@ void main() {
   const uint index = uint(pixel.y * size.x + pixel.x);
   const ivec2 local = ivec2(gl_LocalInvocationID.xy) + 1;  // the pixel in the tile
   const vec4 own = tile[local.y][local.x];
-  if (own.a == 0.0) {  // not reflective
-    imageStore(accumulated, pixel, vec4(0.0));
+  if (own.a == 0.0) {  // not reflective: nothing reads its history (its guide says so)
     imageStore(guide, pixel, uvec4(0u));
     store_motion(index, vec2(-1.0));
     return;

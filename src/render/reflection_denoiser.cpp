@@ -99,6 +99,7 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   for (int i = 0; i < d.iterations; ++i) {
     const int target = i % 2;
     spatial_.set_uniform("step", 1 << i);
+    spatial_.set_uniform("last_iteration", i + 1 == d.iterations ? 1 : 0);
     glBindTextureUnit(0, source);
     glBindImageTexture(0, filtered_[target].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kHistoryFormat);
     spatial_.use();

@@ -50,7 +50,8 @@ public:
   void reset() { has_history_ = false; }
 
   GLuint output() const { return filtered_[last_output_].id(); }
-  GLuint accumulated() const { return history_[current_ ^ 1].id(); }  // the last temporal result
+  // The last temporal result (rgb, a = history length) at reflective pixels; others undefined.
+  GLuint accumulated() const { return history_[current_ ^ 1].id(); }
   // On: later runs also record every pixel's motion for read_motion() (tests; off by default, it
   // costs a write of 8 bytes a pixel).
   void record_motion(bool on);
