@@ -1,7 +1,8 @@
 // Frames of many reflection samples on the GPU backends (--spp N): each sample traces two timed CUDA
-// spans, so a 64-sample frame traces more than the 64 spans a backend's time ring keeps. The frame's
-// structure update was timed before them; its time must still reach timings.csv and run.json rather
-// than fail as a span read after its slot was reused (what the 256-sample reference did on the H200).
+// spans, so a 64-sample frame traces more than the 64 spans the backends' time ring once kept. The
+// frame's structure update was timed before them; its time must still reach timings.csv and run.json
+// rather than fail as a span read after its slot was reused (what the 256-sample reference did on the
+// H200). The backends now keep every span until it is read (cuda/gpu_span_pool.h).
 #include "app/cli_runner.h"
 #include "cuda/device_query.h"
 #include "support/temp_folder.h"
