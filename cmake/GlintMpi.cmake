@@ -63,7 +63,8 @@ function(glint_use_mpi target)
 endfunction()
 
 # CTest tests of the split (tests/mpi/mpi_scaleout_test.py): `mpirun -np 2` and `-np 3` of
-# `glint bench --quick` and of a 12-frame render against one process, and a rank made to fail.
+# `glint bench --quick` and of a 12-frame render against one process, a rank made to fail, and an
+# interrupted run resumed.
 # Without MPI they are registered all the same and report themselves skipped (exit 77).
 function(glint_add_mpi_tests)
   find_package(Python3 COMPONENTS Interpreter QUIET)
@@ -74,7 +75,7 @@ function(glint_add_mpi_tests)
   if(GLINT_HAVE_MPI)
     set(_mpirun "${MPIEXEC_EXECUTABLE}")
   endif()
-  foreach(_case IN ITEMS bench_np2 bench_np3 render_np2 render_np3 failed_rank)
+  foreach(_case IN ITEMS bench_np2 bench_np3 render_np2 render_np3 failed_rank interrupted)
     add_test(NAME Mpi.${_case}
              COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/mpi/mpi_scaleout_test.py ${_case}
              WORKING_DIRECTORY ${CMAKE_BINARY_DIR})

@@ -338,6 +338,17 @@ int run_bench_command(const BenchOptions& given_options) {
         cells[i].to_run = false;
       }
     distribution = shared->distribution;
+    // mpirun passes a Ctrl-C or SIGTERM to every rank: the cells left are interrupted, not failed,
+    // and, as in one process, no summary is written until the same command has run them.
+    if (interruption_requested()) {
+      std::size_t finished = 0;
+      for (const PlannedCell& planned : cells)
+        finished += planned.outcome.state == CellOutcome::State::done ? 1 : 0;
+      progress.finish();
+      throw Interrupted(fmt::format("bench: interrupted by {}; {} of {} cells are done in {} (and the finished ranges "
+                                    "of split cells in cells/parts/); the same command resumes the run",
+                                    interruption_signal_name(), finished, cells.size(), out.string()));
+    }
   }
   std::size_t done = 0;
   for (const PlannedCell& planned : cells) done += planned.outcome.resumed ? 1 : 0;

@@ -10,6 +10,9 @@ One CTest test per case (cmake/GlintMpi.cmake registers them as Mpi.<case>):
   render_np3    the same with 3 ranks
   failed_rank   -np 3 bench (split) and -np 2 render with rank 1 made to fail
                 (GLINT_TEST_MPI_FAIL_RANK=1): reported, and the rest completes with the same results
+  interrupted   -np 2 bench sent SIGTERM once its first cell is written: it says it was interrupted
+                (no cell called failed, no summary.json) and the same command resumes it to the
+                same results as one process
 Exit 77 (skipped) when glint was built without MPI. The one-process runs are made once per binary
 and shared by the cases (a lock keeps parallel cases from making them twice).
 """
@@ -20,8 +23,10 @@ import hashlib
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 GLINT = os.environ.get("GLINT_CLI", "")
 MPIRUN = os.environ.get("GLINT_MPIRUN", "")
@@ -44,16 +49,37 @@ def run(command, env=None):
     return result
 
 
-def mpirun(ranks, args, out, extra_env=None):
+def mpirun_command(ranks, args, out, extra_env=None):
     # As root (containers, CI) Open MPI wants both variables; --oversubscribe lets 3 ranks share 2
     # cores; --bind-to none keeps each rank's threads (llvmpipe, TBB) free to use every core.
     # Containers often forbid the cross-process reads Open MPI uses for large messages on one host
     # (process_vm_readv); copying through shared memory works everywhere.
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_btl_vader_single_copy_mechanism="none", **(extra_env or {}))
+    return [MPIRUN, "-np", str(ranks), "--oversubscribe", "--bind-to", "none", GLINT] + args + ["--out", out], env
+
+
+def mpirun(ranks, args, out, extra_env=None):
     if os.path.exists(out):
         shutil.rmtree(out)
-    return run([MPIRUN, "-np", str(ranks), "--oversubscribe", "--bind-to", "none", GLINT] + args + ["--out", out], env)
+    return run(*mpirun_command(ranks, args, out, extra_env))
+
+
+def interrupt_after_first_cell(ranks, args, out):
+    """Starts the mpirun, sends it SIGTERM (which it passes to every rank) once a cell is finished."""
+    if os.path.exists(out):
+        shutil.rmtree(out)
+    command, env = mpirun_command(ranks, args, out)
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    cells = os.path.join(out, "cells")
+    deadline = time.monotonic() + 300
+    while process.poll() is None and time.monotonic() < deadline:
+        if os.path.isdir(cells) and any(name.endswith(".csv") for name in os.listdir(cells)):
+            process.send_signal(signal.SIGTERM)
+            break
+        time.sleep(0.05)
+    stdout, stderr = process.communicate(timeout=300)
+    return process.returncode, stdout, stderr
 
 
 def baseline(name, args):
@@ -189,6 +215,23 @@ def main():
         run_json = check_render(baseline("render", RENDER), shared + "-render", 2)
         if "failure" not in run_json["distribution"]["per_rank"][1]:
             fail("run.json does not report rank 1's failure")
+    elif case == "interrupted":
+        # Long enough cells that the signal lands while most of them are still to run.
+        args = BENCH + ["--frames", "12", "--stride", "1"]
+        code, _, stderr = interrupt_after_first_cell(2, args, shared)
+        if code == 0:
+            fail("the interrupted run exited with 0")
+        if "interrupted by SIGTERM" not in stderr or "the same command resumes" not in stderr:
+            fail(f"the interruption is not reported as one:\n{stderr}")
+        if " failed" in stderr:
+            fail(f"an interrupted run calls cells failed:\n{stderr}")
+        if os.path.exists(os.path.join(shared, "summary.json")):
+            fail("the interrupted run wrote summary.json")
+        kept = [name for name in os.listdir(os.path.join(shared, "cells")) if name.endswith(".csv")]
+        result = run(*mpirun_command(2, args, shared))
+        if len(kept) > 0 and "kept from an earlier run" not in result.stdout:
+            fail(f"the resumed run kept none of the {len(kept)} finished cells:\n{result.stdout}")
+        check_bench(baseline("bench-frames-12", args), shared, 2)
     else:
         fail(f"unknown case {case}")
     print(f"{case}: same results as one process")

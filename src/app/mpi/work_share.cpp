@@ -29,18 +29,19 @@ struct Outcome {
   std::size_t piece = 0;
   bool ok = false;
   bool retire = false;
+  bool interrupted = false;  // stopped by Ctrl-C or SIGTERM: the piece is left for --resume, not failed
   std::string error;
   nlohmann::json result;
 };
 
 nlohmann::json to_json(const Outcome& outcome) {
-  return {{"piece", outcome.piece}, {"ok", outcome.ok}, {"retire", outcome.retire}, {"error", outcome.error},
-          {"result", outcome.result}};
+  return {{"piece", outcome.piece}, {"ok", outcome.ok}, {"retire", outcome.retire},
+          {"interrupted", outcome.interrupted}, {"error", outcome.error}, {"result", outcome.result}};
 }
 
 Outcome outcome_from_json(const nlohmann::json& json) {
   return {json.at("piece").get<std::size_t>(), json.at("ok").get<bool>(), json.at("retire").get<bool>(),
-          json.at("error").get<std::string>(), json.at("result")};
+          json.at("interrupted").get<bool>(), json.at("error").get<std::string>(), json.at("result")};
 }
 
 // Runs one piece and says how it went; a rank made to fail by the test variable fails here.
@@ -60,6 +61,7 @@ Outcome run_piece(std::size_t piece, const std::function<nlohmann::json(std::siz
   } catch (const Interrupted& interrupted) {  // Ctrl-C or SIGTERM: this rank starts nothing more
     outcome.error = interrupted.what();
     outcome.retire = true;
+    outcome.interrupted = true;
   } catch (const Error& error) {
     outcome.error = error.what();
     outcome.retire = options.errors_retire_rank;
@@ -94,7 +96,10 @@ struct Book {
       return;
     }
     scheduler.failed(rank, outcome.piece, outcome.error, outcome.retire);
-    if (outcome.retire) {
+    if (outcome.interrupted) {
+      report.failure = outcome.error;
+      log_info("rank {} ({}) stopped: {}", rank, report.about.value("host", std::string("?")), outcome.error);
+    } else if (outcome.retire) {
       report.failure = outcome.error;
       log_warning("rank {} ({}) failed: {}; it takes no more pieces", rank,
                   report.about.value("host", std::string("?")), outcome.error);
