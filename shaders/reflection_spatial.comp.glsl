@@ -36,6 +36,7 @@ uniform float normal_power;
 uniform float roughness_sigma;
 
 const float kB3[3] = float[3](3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0);
+const float kLog2e = 1.4426950408889634;
 
 void main() {
   const ivec2 size = textureSize(source, 0);
@@ -60,6 +61,8 @@ void main() {
   const float roughness_key = guide_roughness(own);  // quantised like the taps': equal for one material
   const float reach = 9.0 * sigma * sigma;          // (3 s)^2
   const float plane_scale = 1.0 / (depth_sigma * max(distance(camera_position.xyz, position), 1e-6));
+  const float inverse_two_sigma2 = 1.0 / (2.0 * sigma * sigma);
+  const float inverse_roughness_sigma = 1.0 / roughness_sigma;
   vec3 sum = vec3(0.0);
   float weight_sum = 0.0;
   for (int j = -2; j <= 2; ++j)
@@ -72,9 +75,13 @@ void main() {
       const uvec4 tap = texelFetch(guide, q, 0);
       if (!guide_reflective(tap)) continue;
       const float plane = abs(dot(normal, guide_position(tap) - position)) * plane_scale;
-      const float w = kB3[abs(i)] * kB3[abs(j)] * exp(-d2 / (2.0 * sigma * sigma)) * exp(-plane) *
-                      pow(max(dot(normal, guide_normal(tap)), 0.0), normal_power) *
-                      exp(-abs(roughness_key - guide_roughness(tap)) / roughness_sigma);
+      // The Gaussian, plane, normal and roughness factors in one exp2: exp(a) exp(b) exp(c) x^p =
+      // 2^(log2(e) (a + b + c) + p log2(x)); a normal facing away (x <= 0) gives 2^(p log2(1e-30)),
+      // 0 for p >= 1 as max(x, 0)^p.
+      const float exponent =
+          -d2 * inverse_two_sigma2 - plane - abs(roughness_key - guide_roughness(tap)) * inverse_roughness_sigma;
+      const float w = kB3[abs(i)] * kB3[abs(j)] *
+                      exp2(kLog2e * exponent + normal_power * log2(max(dot(normal, guide_normal(tap)), 1e-30)));
       sum += w * texelFetch(source, q, 0).rgb;
       weight_sum += w;
     }

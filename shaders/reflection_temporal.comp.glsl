@@ -10,9 +10,10 @@
 //   n        = min(history length + 1, 1 + (max_history - 1) min(roughness / 0.3, 1)^2)
 //   out      = mix(previous, c, 1 / n)   (near-mirrors keep little history: see below)
 // Mirrors (roughness 0) and pixels without history pass c through (n = 1). Output: rgb, a = n
-// (reflective pixels only: no later read takes a non-reflective pixel's), and every pixel's guide (include/denoiser_guide.glsl) for this
-// frame's spatial passes and the next frame's same-surface tests; with record_motion the motion
-// buffer: the previous position (pixels), (-1, -1) when the history restarted.
+// (reflective pixels only: no later read takes a non-reflective pixel's), and every pixel's guide
+// (include/denoiser_guide.glsl) for this frame's spatial passes and the next frame's same-surface
+// tests; with record_motion the motion buffer: the previous position (pixels), (-1, -1) when the
+// history restarted.
 //
 // Cost: the 3x3 neighbourhood's faded reflection is loaded once per work group into shared memory
 // (a 10 x 10 tile: 1.6 loads a pixel instead of 9 x 3 fetches), and a mirror skips the reprojection.

@@ -47,7 +47,8 @@ PlateScene plate_over_floor() {
   s.scene.materials[floor].roughness = 0.5f;
   s.scene.materials[plate].roughness = 0.5f;
   testing::add_quad(s.scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
-  s.plate_mesh = testing::add_quad(s.scene, vec3(-1.0f, 0.5f, 1.0f), vec3(2.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -2.0f), plate);
+  s.plate_mesh =
+      testing::add_quad(s.scene, vec3(-1.0f, 0.5f, 1.0f), vec3(2.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -2.0f), plate);
   s.scene.meshes[s.plate_mesh].deformable = true;
   s.scene.meshes[s.plate_mesh].deform = SineDeform{};
   s.plate_transform = glm::scale(glm::translate(mat4(1.0f), vec3(0.2f, 0.0f, 0.0f)), vec3(1.25f));
@@ -80,7 +81,8 @@ void render_frame(RasterPipeline& raster, const FrameState& frame) {
 }
 
 // A denoiser run over that frame, with the pipeline's world motion or without it (camera only).
-void denoise(const RasterPipeline& raster, const GlTexture& reflection, ReflectionDenoiser& denoiser, bool with_motion) {
+void denoise(const RasterPipeline& raster, const GlTexture& reflection, ReflectionDenoiser& denoiser,
+             bool with_motion) {
   denoiser.run({reflection.id(), raster.world_position(), raster.world_normal_roughness(), raster.albedo_reflectivity(),
                 raster.frame_constants_buffer(), raster.frame_constants().view_projection,
                 with_motion ? raster.world_motion() : 0},
