@@ -5,14 +5,18 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace glint::render {
 
 vec2 clip_range_for(const Aabb& world_bounds) {
-  const float diagonal = world_bounds.empty() ? 100.0f : glm::length(world_bounds.extent());
-  const float far_plane = std::max(2.0f * diagonal, 1.0f);
-  const float near_plane = std::max(far_plane * 1e-4f, 0.01f);
-  return {near_plane, far_plane};
+  // Relative to the scene's size: floors in world units (far >= 1, near >= 0.01) once clipped a scene
+  // a thousandth of the atrium's size away entirely. Near is 1 cm where that is 1/10000 to 1/8000 of
+  // far, as before for a scene the atrium's size (whose frames stay bit-identical), else the nearer
+  // end of that range.
+  const float diagonal = world_bounds.empty() ? 0.0f : glm::length(world_bounds.extent());
+  const float far_plane = std::isfinite(diagonal) && diagonal > 0.0f ? 2.0f * diagonal : 200.0f;
+  return {std::clamp(0.01f, far_plane * 1e-4f, far_plane * 1.25e-4f), far_plane};
 }
 
 FrameConstants make_frame_constants(const Scene& scene, const Aabb& world_bounds, const FrameState& frame, int width,

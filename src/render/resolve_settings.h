@@ -36,9 +36,15 @@ struct DenoiseSettings {
 struct ResolveSettings {
   // Distance fade of the reflection by the reflected ray's world length d (reflection.a):
   // factor 1 for d <= fade_start, falling smoothly (smoothstep) to 0 at d >= fade_end.
-  // fade_end <= 0 turns the fade off (factor exactly 1).
+  // fade_end <= 0 turns the fade off (factor exactly 1). The defaults are the paper's, for its
+  // atrium; ResolvePass applies the two as given.
   float fade_start = 15.0f;
   float fade_end = 30.0f;
+  // FramePipeline only: true (the default) replaces fade_start and fade_end of a fade that is on
+  // by the scene's (render/scene_reflection_fade.h: its file's "reflection_fade", else the paper's
+  // fade scaled to the scene's bounds diagonal), so the fade follows the scene's size; false keeps
+  // them as given. A fade that is off stays off either way.
+  bool fade_from_scene = true;
   // Separable Gaussian blur radius in pixels (0..32), sigma = radius / 2. 0 = no blur: the
   // reflection passes through (only faded), bit-identical when the fade is off.
   int blur_radius = 2;

@@ -73,6 +73,13 @@ struct PointLight {
   float range = 10.0f;
 };
 
+// Distance fade of reflections (docs/ssr.md): a reflection found farther than `start` fades out
+// smoothly by `end`, in world units; end <= 0 turns the fade off.
+struct DistanceFade {
+  float start = 0.0f;
+  float end = 0.0f;
+};
+
 struct Scene {
   std::string name;                 // preset name or file stem
   std::string source;               // file path, or "built-in"
@@ -83,6 +90,9 @@ struct Scene {
   PointLight light;
   Walkthrough walkthrough;
   vec3 sky_color{0.55f, 0.65f, 0.8f};  // colour of rays that leave the scene
+  // A scene file's "reflection_fade". Without it the renderer fits the fade to the scene's size
+  // (render/scene_reflection_fade.h).
+  std::optional<DistanceFade> reflection_fade;
 
   // Totals over instances (a mesh drawn twice counts twice), as the paper counts its scene.
   std::size_t vertex_count() const;

@@ -71,6 +71,7 @@ struct SceneDescription {
   float frames_per_second = 30.0f;
   std::optional<vec3> sky_color;
   std::optional<FloorDescription> floor;
+  std::optional<DistanceFade> reflection_fade;  // "reflection_fade", world units
 };
 
 }  // namespace glint

@@ -152,6 +152,7 @@ Scene build_scene(const SceneDescription& description, const LoadOptions& option
 
   if (description.floor) apply_floor(scene, description);
   if (description.sky_color) scene.sky_color = *description.sky_color;
+  scene.reflection_fade = description.reflection_fade;
   apply_walkthrough(scene, description);
   log_info("{}: {} meshes, {} instances, {} triangles", label, scene.meshes.size(), scene.instances.size(),
            scene.triangle_count());

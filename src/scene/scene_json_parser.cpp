@@ -169,6 +169,18 @@ FloorDescription parse_floor(const JsonField& field) {
   return floor;
 }
 
+// {"start": s, "end": e} in world units, 0 <= s < e; or {"start": 0, "end": 0}: no fade.
+DistanceFade parse_reflection_fade(const JsonField& field) {
+  field.require_object({"start", "end"});
+  DistanceFade fade;
+  fade.start = field.at("start").number();
+  fade.end = field.at("end").number();
+  const bool off = fade.start == 0.0f && fade.end == 0.0f;
+  if (!off && !(fade.start >= 0.0f && fade.start < fade.end))
+    field.error("the fade needs 0 <= start < end (or both 0: no fade), got start {} and end {}", fade.start, fade.end);
+  return fade;
+}
+
 // "sponza.scene.json" -> "sponza"; "x.json" -> "x".
 std::string scene_name_from(const std::filesystem::path& origin) {
   std::string name = origin.filename().string();
@@ -183,7 +195,8 @@ SceneDescription parse_scene_description(std::string_view text, const std::files
   const std::string label = origin.string();
   const nlohmann::json document = parse_json_text(text, label);
   const JsonField root(document, label, "");
-  root.require_object({"name", "assets", "meshes", "light", "camera", "frames", "fps", "sky_color", "floor"});
+  root.require_object(
+      {"name", "assets", "meshes", "light", "camera", "frames", "fps", "sky_color", "floor", "reflection_fade"});
 
   SceneDescription description;
   description.origin = origin;
@@ -209,6 +222,7 @@ SceneDescription parse_scene_description(std::string_view text, const std::files
   }
   if (auto f = root.find("sky_color")) description.sky_color = parse_color(*f);
   if (auto f = root.find("floor")) description.floor = parse_floor(*f);
+  if (auto f = root.find("reflection_fade")) description.reflection_fade = parse_reflection_fade(*f);
   return description;
 }
 

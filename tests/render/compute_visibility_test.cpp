@@ -334,13 +334,16 @@ TEST_F(ComputeVisibility, TriangleCrossingTheNearPlaneIsClippedThere) {
   Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 0.0f));
   const std::uint32_t ramp = testing::add_material(scene, vec3(0.9f, 0.3f, 0.3f));
   const std::uint32_t back = testing::add_material(scene, vec3(0.3f, 0.3f, 0.9f));
-  // y = 0.5 (-z - near) with near = 0.01 (clip_range_for: a scene this small): y = 0 on the near plane.
-  testing::add_quad(scene, vec3(-1.0f, -0.03f, 0.05f), vec3(2.0f, 0.0f, 0.0f), vec3(0.0f, 1.025f, -2.05f), ramp);
+  // y = 0.5 (-z - near), with near the clip range's for the scene's bounds (those of the back quad
+  // and the ramp's near end): y = 0 on the near plane.
+  const float near = clip_range_for(Aabb{vec3(-4.0f, -3.0f, -4.0f), vec3(4.0f, 3.0f, 0.05f)}).x;
+  testing::add_quad(scene, vec3(-1.0f, -0.025f - 0.5f * near, 0.05f), vec3(2.0f, 0.0f, 0.0f),
+                    vec3(0.0f, 1.025f, -2.05f), ramp);
   testing::add_quad(scene, vec3(-4.0f, -3.0f, -4.0f), vec3(8.0f, 0.0f, 0.0f), vec3(0.0f, 6.0f, 0.0f), back);
   const FrameState state = testing::look_at(vec3(0.0f), vec3(0.0f, 0.0f, -1.0f), scene.light.position);
   const Frame raster = render_frame(scene, state, 96, 64, PrimaryVisibility::raster);
   const Frame computed = render_frame(scene, state, 96, 64, PrimaryVisibility::compute);
-  ASSERT_NEAR(raster.constants.near_far.x, 0.01f, 1e-6f);
+  ASSERT_EQ(raster.constants.near_far.x, near);
   EXPECT_TRUE(crosses_behind_camera(scene, raster.constants, 0));
   expect_same_visibility(compare(scene, raster, computed), 96 * 64 / 2);
   // The ramp holds most of the upper half and nothing of the lower one.

@@ -282,6 +282,36 @@ TEST(SceneJson, LightCameraFramesAndDefaultWalkthrough) {
   EXPECT_GE(fixed.walkthrough.camera.points.size(), 2u);  // no camera block: the default camera
 }
 
+// "reflection_fade" gives the reflections' distance fade in world units (docs/scene-format.md);
+// without it the renderer fits one to the scene's size (render/scene_reflection_fade.h).
+TEST(SceneJson, ReflectionFadeIsTakenAsGivenAndChecked) {
+  TempFolder folder;
+  folder.write("tri.gltf", triangle_gltf("m"));
+  const std::filesystem::path origin = folder.path() / "fade.scene.json";
+  const Scene plain = load_scene_json_text(R"({"meshes": [{"file": "tri.gltf"}]})", origin);
+  EXPECT_FALSE(plain.reflection_fade.has_value());
+  const Scene faded =
+      load_scene_json_text(R"({"meshes": [{"file": "tri.gltf"}], "reflection_fade": {"start": 150, "end": 300.5}})", origin);
+  ASSERT_TRUE(faded.reflection_fade.has_value());
+  EXPECT_EQ(faded.reflection_fade->start, 150.0f);
+  EXPECT_EQ(faded.reflection_fade->end, 300.5f);
+  const Scene off =
+      load_scene_json_text(R"({"meshes": [{"file": "tri.gltf"}], "reflection_fade": {"start": 0, "end": 0}})", origin);
+  ASSERT_TRUE(off.reflection_fade.has_value());
+  EXPECT_EQ(off.reflection_fade->end, 0.0f);
+
+  EXPECT_NE(parse_error(R"({"meshes": [{"file": "a.obj"}], "reflection_fade": {"start": 30, "end": 15}})")
+                .find("scene.json: /reflection_fade: the fade needs 0 <= start < end (or both 0: no fade), got start 30 "
+                      "and end 15"),
+            std::string::npos);
+  EXPECT_NE(parse_error(R"({"meshes": [{"file": "a.obj"}], "reflection_fade": {"start": 1}})")
+                .find("/reflection_fade: missing required key \"end\""),
+            std::string::npos);
+  EXPECT_NE(parse_error(R"({"meshes": [{"file": "a.obj"}], "reflection_fade": {"begin": 1, "end": 2}})")
+                .find("/reflection_fade/begin: unknown key"),
+            std::string::npos);
+}
+
 TEST(SceneJson, BuildErrorsNameTheFileAndJsonPath) {
   TempFolder folder;
   folder.write("tri.gltf", triangle_gltf("stone"));
