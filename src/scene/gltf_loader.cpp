@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 namespace glint {
@@ -319,10 +320,12 @@ private:
 
   std::uint32_t material_slot(int index, const std::string& where) {
     if (index < 0) {
-      // glTF's default material: white, fully rough (so not reflective).
+      // glTF's default material: white, fully rough metal. glint gives it no mirror term: a file
+      // without materials is plain geometry, not a mirror (docs/scene-format.md).
       if (default_material_ == kNoSlot) {
         Material material = convert_gltf_material(tinygltf::Material(), 0);
         material.name = "default";
+        material.reflectivity = 0.0f;
         scene_.materials.push_back(material);
         default_material_ = static_cast<int>(scene_.materials.size() - 1);
       }
@@ -333,7 +336,14 @@ private:
     int& slot = material_slots_[static_cast<std::size_t>(index)];
     if (slot == kNoSlot) {
       const tinygltf::Material& source = model_.materials[static_cast<std::size_t>(index)];
-      Material material = convert_gltf_material(source, index);
+      MetallicRoughnessMean texture_mean;
+      if (const int texture = source.pbrMetallicRoughness.metallicRoughnessTexture.index; texture >= 0) {
+        const std::string texture_where =
+            fmt::format("{}: materials[{}].pbrMetallicRoughness.metallicRoughnessTexture", label_, index);
+        if (const tinygltf::Image* image = texture_image(texture, texture_where))
+          texture_mean = metallic_roughness_mean(convert_gltf_image(*image, texture_where, texture_where));
+      }
+      Material material = convert_gltf_material(source, index, texture_mean);
       const int texture = source.pbrMetallicRoughness.baseColorTexture.index;
       if (texture >= 0)
         material.diffuse_texture =
@@ -346,31 +356,48 @@ private:
 
   // The glint texture for a glTF texture (shared per image), or -1 when its image is unavailable.
   int texture_slot(int texture_index, const std::string& where) {
-    if (static_cast<std::size_t>(texture_index) >= model_.textures.size())
-      fail("{}: texture {} does not exist ({} textures)", where, texture_index, model_.textures.size());
-    const int image_index = model_.textures[static_cast<std::size_t>(texture_index)].source;
-    if (image_index < 0) return -1;  // e.g. only an extension's image (KHR_texture_basisu): not supported
-    if (static_cast<std::size_t>(image_index) >= model_.images.size())
-      fail("{}: textures[{}]: image {} does not exist ({} images)", label_, texture_index, image_index, model_.images.size());
+    const int image_index = texture_image_index(texture_index, where);
+    if (image_index < 0) return -1;
     std::optional<int>& slot = image_slots_[static_cast<std::size_t>(image_index)];
     if (!slot) {
-      const tinygltf::Image& image = model_.images[static_cast<std::size_t>(image_index)];
-      const std::string image_where = fmt::format("{}: images[{}]", label_, image_index);
-      if (image.image.empty()) {
-        // Like a missing OBJ texture, not fatal (tinygltf has warned when the file was not found).
-        const auto failure = image_failures_.reasons.find(image_index);
-        log_warning("{}: image \"{}\" could not be loaded{}; the material stays untextured", image_where,
-                    untrusted_text(image.uri),
-                    failure == image_failures_.reasons.end() ? std::string() : ": " + failure->second);
-        slot = -1;
-      } else {
-        const bool external = !image.uri.empty() && image.uri.rfind("data:", 0) != 0;
-        const std::string name = external ? (path_.parent_path() / image.uri).string() : image_where;
-        scene_.textures.push_back(convert_gltf_image(image, name, image_where));
+      slot = -1;
+      if (const tinygltf::Image* image = texture_image(texture_index, where)) {
+        const std::string image_where = fmt::format("{}: images[{}]", label_, image_index);
+        const bool external = !image->uri.empty() && image->uri.rfind("data:", 0) != 0;
+        const std::string name = external ? (path_.parent_path() / image->uri).string() : image_where;
+        scene_.textures.push_back(convert_gltf_image(*image, name, image_where));
         slot = static_cast<int>(scene_.textures.size() - 1);
       }
     }
     return *slot;
+  }
+
+  // The image index of a glTF texture, or -1 when it has none (e.g. only an extension's image,
+  // KHR_texture_basisu: not supported). An index out of range is an error.
+  int texture_image_index(int texture_index, const std::string& where) const {
+    if (static_cast<std::size_t>(texture_index) >= model_.textures.size())
+      fail("{}: texture {} does not exist ({} textures)", where, texture_index, model_.textures.size());
+    const int image_index = model_.textures[static_cast<std::size_t>(texture_index)].source;
+    if (image_index >= 0 && static_cast<std::size_t>(image_index) >= model_.images.size())
+      fail("{}: textures[{}]: image {} does not exist ({} images)", label_, texture_index, image_index, model_.images.size());
+    return image_index;
+  }
+
+  // The decoded image of a glTF texture, or null when it has none or it could not be loaded: like a
+  // missing OBJ texture, not fatal; one warning per image (tinygltf has warned when the file was not
+  // found), and the material does without it.
+  const tinygltf::Image* texture_image(int texture_index, const std::string& where) {
+    const int image_index = texture_image_index(texture_index, where);
+    if (image_index < 0) return nullptr;
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(image_index)];
+    if (!image.image.empty()) return &image;
+    if (unloadable_images_warned_.insert(image_index).second) {
+      const auto failure = image_failures_.reasons.find(image_index);
+      log_warning("{}: images[{}]: image \"{}\" could not be loaded{}; the material does without it", label_,
+                  image_index, untrusted_text(image.uri),
+                  failure == image_failures_.reasons.end() ? std::string() : ": " + failure->second);
+    }
+    return nullptr;
   }
 
   const tinygltf::Model& model_;
@@ -382,6 +409,7 @@ private:
   std::vector<std::vector<std::optional<int>>> primitive_slots_;
   std::vector<int> material_slots_;
   std::vector<std::optional<int>> image_slots_;
+  std::set<int> unloadable_images_warned_;
   int default_material_ = kNoSlot;
   std::optional<GltfCameraNode> first_camera_;
   std::size_t skipped_primitives_ = 0;

@@ -9,16 +9,30 @@
 
 namespace glint {
 
-Material convert_gltf_material(const tinygltf::Material& material, int index) {
+MetallicRoughnessMean metallic_roughness_mean(const Texture& texture) {
+  const std::size_t texels = texture.rgba.size() / 4;
+  if (texels == 0) return {};
+  double green = 0.0, blue = 0.0;  // sums of up to 2^28 bytes: exact in a double
+  for (std::size_t t = 0; t < texels; ++t) {
+    green += texture.rgba[t * 4 + 1];
+    blue += texture.rgba[t * 4 + 2];
+  }
+  const double scale = 1.0 / (255.0 * static_cast<double>(texels));
+  return {static_cast<float>(green * scale), static_cast<float>(blue * scale)};
+}
+
+Material convert_gltf_material(const tinygltf::Material& material, int index, const MetallicRoughnessMean& texture_mean) {
   Material out;
   out.name = material.name.empty() ? fmt::format("materials[{}]", index) : material.name;
   const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
   if (pbr.baseColorFactor.size() >= 3)
     out.diffuse = vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
                        static_cast<float>(pbr.baseColorFactor[2]));
-  const float metallic = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
-  const float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
-  out.reflectivity = metallic * (1.0f - roughness);
+  const float metallic = std::clamp(static_cast<float>(pbr.metallicFactor) * texture_mean.metallic, 0.0f, 1.0f);
+  const float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor) * texture_mean.roughness, 0.0f, 1.0f);
+  // Roughness widens the reflection (the GGX lobe of --glossy on) and keeps its energy: weakening
+  // the mirror term by it as well would count it twice.
+  out.reflectivity = metallic;
   out.roughness = roughness;
   out.specular = glm::mix(vec3(0.04f), out.diffuse, metallic);
   out.specular_exponent = specular_exponent_from_roughness(roughness);

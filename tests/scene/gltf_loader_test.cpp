@@ -141,7 +141,10 @@ TEST(GltfLoader, MapsMetallicRoughnessMaterials) {
   const Material& chrome = scene.materials[scene.meshes[0].material];
   EXPECT_EQ(chrome.name, "chrome");
   expect_near(chrome.diffuse, vec3(0.5f, 0.25f, 1.0f));
-  EXPECT_FLOAT_EQ(chrome.reflectivity, 0.75f);  // metallic 1 * (1 - roughness 0.25)
+  // Metallic 1 mirrors fully; the roughness widens the reflection (roughness) and does not also
+  // weaken it (it once gave metallic x (1 - roughness) = 0.75).
+  EXPECT_FLOAT_EQ(chrome.reflectivity, 1.0f);
+  EXPECT_FLOAT_EQ(chrome.roughness, 0.25f);
   expect_near(chrome.specular, chrome.diffuse);  // metals reflect their own colour
   expect_near(chrome.emissive, vec3(0.1f, 0.2f, 0.3f));
   EXPECT_FLOAT_EQ(chrome.specular_exponent, specular_exponent_from_roughness(0.25f));
@@ -153,8 +156,56 @@ TEST(GltfLoader, MapsMetallicRoughnessMaterials) {
   EXPECT_FLOAT_EQ(plastic.specular_exponent, 30.0f);  // roughness 0.5: 2 / 0.25^2 - 2
   const Material& fallback = scene.materials[scene.meshes[2].material];
   EXPECT_EQ(fallback.name, "default");
-  EXPECT_FLOAT_EQ(fallback.reflectivity, 0.0f);  // default: metallic 1, roughness 1
+  EXPECT_FLOAT_EQ(fallback.reflectivity, 0.0f);  // glTF's default is a rough metal; glint's is no mirror
   expect_near(fallback.diffuse, vec3(1.0f));
+}
+
+TEST(GltfLoader, MetallicRoughnessTextureScalesTheFactorsByItsMeans) {
+  GltfBuilder gltf;
+  // 2x2, linear: G (roughness) 0, 102, 204, 255 -> mean 0.55; B (metallic) 255, 255, 0, 0 -> mean 0.5.
+  // R and A are unused by glTF and set to disturb a wrong channel.
+  const std::vector<std::uint8_t> pixels = {9, 0, 255, 17, 9, 102, 255, 17, 9, 204, 0, 17, 9, 255, 0, 17};
+  const int image = gltf.add_png_image(testing::encode_png(2, 2, pixels));
+  gltf.json["textures"].push_back({{"source", image}});
+  gltf.json["materials"].push_back(
+      {{"name", "worn metal"},
+       {"pbrMetallicRoughness",
+        {{"metallicFactor", 0.8}, {"roughnessFactor", 0.5}, {"metallicRoughnessTexture", {{"index", 0}}}}}});
+  // Only the texture: the factors default to 1.
+  gltf.json["materials"].push_back({{"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", 0}}}}}});
+  const int positions = gltf.add_vec3(testing::unit_triangle());
+  const int uvs = gltf.add_vec2({0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f});
+  gltf.add_mesh_node({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 0}});
+  gltf.add_mesh_node({{"attributes", {{"POSITION", positions}, {"TEXCOORD_0", uvs}}}, {"material", 1}});
+  TempFolder folder;
+  const Scene scene = load_gltf(folder.write("worn.gltf", gltf.gltf_text()));
+  EXPECT_TRUE(scene.textures.empty()) << "the texture is folded into the material, not drawn";
+  const Material& worn = scene.materials[scene.meshes[0].material];
+  EXPECT_EQ(worn.diffuse_texture, -1);
+  EXPECT_NEAR(worn.roughness, 0.5f * 0.55f, 1e-5f);
+  EXPECT_NEAR(worn.reflectivity, 0.8f * 0.5f, 1e-5f);
+  EXPECT_NEAR(worn.specular_exponent, specular_exponent_from_roughness(0.5f * 0.55f), 1e-3f);
+  expect_near(worn.specular, glm::mix(vec3(0.04f), vec3(1.0f), 0.4f));
+  const Material& bare = scene.materials[scene.meshes[1].material];
+  EXPECT_NEAR(bare.roughness, 0.55f, 1e-5f);
+  EXPECT_NEAR(bare.reflectivity, 0.5f, 1e-5f);
+}
+
+TEST(GltfLoader, MissingMetallicRoughnessImageLeavesTheFactorsWithAWarning) {
+  GltfBuilder gltf;
+  gltf.json["images"].push_back({{"uri", "gone.png"}});
+  gltf.json["textures"].push_back({{"source", 0}});
+  gltf.json["materials"].push_back(
+      {{"pbrMetallicRoughness",
+        {{"metallicFactor", 0.6}, {"roughnessFactor", 0.3}, {"metallicRoughnessTexture", {{"index", 0}}}}}});
+  gltf.add_mesh_node({{"attributes", {{"POSITION", gltf.add_vec3(testing::unit_triangle())}}}, {"material", 0}});
+  TempFolder folder;
+  ScopedLogCapture log;
+  const Scene scene = load_gltf(folder.write("gone.gltf", gltf.gltf_text()));
+  EXPECT_EQ(log.count_warnings("image \"gone.png\" could not be loaded"), 1);
+  const Material& material = scene.materials[scene.meshes[0].material];
+  EXPECT_FLOAT_EQ(material.roughness, 0.3f);
+  EXPECT_FLOAT_EQ(material.reflectivity, 0.6f);
 }
 
 TEST(GltfLoader, SpecularExponentFallsWithRoughnessWithinItsClamp) {
