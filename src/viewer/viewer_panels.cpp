@@ -82,7 +82,7 @@ void settings_panel(const PanelContext& context, ViewerState& state) {
   dragged_scale = ImGui::IsItemActive() ? std::optional<float>(scale) : std::nullopt;
   ImGui::Checkbox("render continuously", &state.continuous);
   for (const ViewerSetting& setting : viewer_settings()) {
-    const std::string label(setting.name);
+    const std::string label(setting.label.empty() ? setting.name : setting.label);
     if (const auto* text = std::get_if<std::string RenderOptions::*>(&setting.field)) {
       if (setting.name == "deform") continue;  // a checkbox in Walkthrough
       choice_combo(label.c_str(), state.options.*(*text), setting.name == "backend" ? context.backends : setting.choices);
@@ -92,7 +92,7 @@ void settings_panel(const PanelContext& context, ViewerState& state) {
         state.options.*(*integer) = std::clamp(value, static_cast<int>(setting.min), static_cast<int>(setting.max));
     } else {
       float value = state.options.*std::get<float RenderOptions::*>(setting.field);
-      if (ImGui::InputFloat(label.c_str(), &value, 0.0f, 0.0f, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue))
+      if (ImGui::InputFloat(label.c_str(), &value, 0.0f, 0.0f, setting.format, ImGuiInputTextFlags_EnterReturnsTrue))
         state.options.*std::get<float RenderOptions::*>(setting.field) =
             std::clamp(value, static_cast<float>(setting.min), static_cast<float>(setting.max));
     }

@@ -40,7 +40,8 @@ std::vector<ViewerSetting> make_settings() {
       {"shadow-map-size", &O::shadow_map_size, {}, 16, 8192},
       {"shadow-cube-draw", &O::shadow_cube_draw, render::kShadowCubeDrawNames.names()},
       {"ssr-max-steps", &O::ssr_max_steps, {}, 1, 4096},
-      {"ssr-thickness", &O::ssr_thickness, {}, 0.001, 100.0},
+      // A fraction of the pixel's view depth, (0, 1] (docs/ssr.md); the default 0.01 is 1 %.
+      {"ssr-thickness", &O::ssr_thickness, {}, 0.0001, 1.0, "%.4f", "ssr-thickness (x depth)"},
       {"ssr-confidence", &O::ssr_confidence, {}, 0.0, 1.0},
       {"blur-radius", &O::blur_radius, {}, 0, 32},
       {"exposure", &O::exposure, {}, 0.01, 100.0},

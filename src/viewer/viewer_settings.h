@@ -17,8 +17,10 @@ struct ViewerSetting {
   std::string_view name;  // "reflections", "ssr-max-steps", ...
   std::variant<std::string RenderOptions::*, int RenderOptions::*, float RenderOptions::*> field;
   std::vector<std::string> choices;  // for text fields: the values it takes
-  double min = 0.0;                  // for numbers: the range, inclusive
+  double min = 0.0;                  // for numbers: the range, inclusive, within what the renderer takes
   double max = 0.0;
+  const char* format = "%.3f";       // for fractional numbers: how the panel shows them (printf)
+  std::string_view label = {};       // the panel's label when it says more than `name` (a unit); "" = name
 };
 
 // Every row, in the order the panels show them.

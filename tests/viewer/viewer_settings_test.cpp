@@ -57,6 +57,26 @@ TEST(ViewerSettings, EveryRowReadsBackAndCountsForTheRebuild) {
   EXPECT_FALSE(same_viewer_settings(resized, RenderOptions()));
 }
 
+// The panel clamps every number to its row's range, so both ends must be values the renderer takes:
+// a wider range offers values that fail the rebuild (ssr-thickness once went to 100, while the
+// thickness is a fraction of view depth in (0, 1]).
+TEST(ViewerSettings, EveryNumberRowsRangeIsOneTheRendererTakes) {
+  for (const ViewerSetting& setting : viewer_settings()) {
+    if (!setting.choices.empty()) continue;
+    for (const double end : {setting.min, setting.max}) {
+      RenderOptions options;
+      set_viewer_setting(options, setting.name, fmt::format("{}", end));
+      EXPECT_NO_THROW(render_pipeline_settings(options)) << setting.name << " = " << end;
+    }
+  }
+  const ViewerSetting* thickness = find_viewer_setting("ssr-thickness");
+  ASSERT_NE(thickness, nullptr);
+  EXPECT_GT(thickness->min, 0.0);
+  EXPECT_EQ(thickness->max, 1.0);
+  // Shown to four places, so that the range's low end (0.0001) is not shown as 0.
+  EXPECT_STREQ(thickness->format, "%.4f");
+}
+
 TEST(ViewerSettings, CpuBackendsAreAlwaysAvailable) {
   const std::vector<std::string> backends = available_backends();
   ASSERT_GE(backends.size(), 2u);
