@@ -49,7 +49,16 @@ FrameLoop::FrameLoop(Scene& scene, const render::FramePipelineSettings& settings
       keep_in_flight_(std::min(options.keep_in_flight, kFramesInFlight - 1)) {
   if (deformers_ && options.deform_on_gpu) gpu_deformer_ = render::make_gpu_deformer(*deformers_, pipeline_);
   pipeline_.set_final_capture(options.capture_final);
+  pipeline_.set_linear_capture(options.capture_linear);
   if (options.profile_scopes) profiler_.emplace(pass_timing);
+  set_hold_frame(options.hold_frame);
+}
+
+void FrameLoop::set_hold_frame(std::optional<int> frame) {
+  if (frame && (*frame < 0 || *frame >= animation_.frame_count()))
+    fail("--hold-frame {}: the walkthrough has {} frames (0 to {})", *frame, animation_.frame_count(),
+         animation_.frame_count() - 1);
+  hold_frame_ = frame;
 }
 
 FrameLoop::~FrameLoop() {
@@ -81,7 +90,7 @@ FrameLoop::DeformTimes FrameLoop::deform(int frame) {
 
 void FrameLoop::read_cuda_times(DeformTimes& times) {
   // The frame's fence passed, and the frame's GL work came after its CUDA work: nothing waits here.
-  // Each time is read once (the tickets are dropped), so an early read (submit) is not repeated.
+  // Each time is read once (the read frees its timing; the tickets are dropped).
   if (times.deform_ticket) times.deform_ms = gpu_deformer_->apply_ms(*times.deform_ticket, /*wait=*/true).value();
   if (times.update_ticket)
     times.accel_update_ms = pipeline_.device_tracing()->gpu_ms(*times.update_ticket, /*wait=*/true).value();
@@ -100,13 +109,12 @@ std::vector<FrameMeasurement> FrameLoop::submit(int frame, const std::optional<C
   InFlight submitted{frame, submitted_++, {}, nullptr};
   timer_.begin_frame();  // the frame's latency starts here, before the deformation
   if (profiler_) profiler_->begin_frame();
-  submitted.deform = deform(frame);
-  FrameState state = animation_.at(frame);
+  // Held: posed (meshes, camera, light) at the held frame, numbered (sampling, history) as submitted.
+  const int posed = hold_frame_.value_or(frame);
+  submitted.deform = deform(posed);
+  FrameState state = animation_.at(posed);
+  state.frame = frame;
   if (camera) state.camera = *camera;
-  // With several reflection samples a frame (--spp N) the frame's traces (two timed spans a sample)
-  // would reuse the structure update's timing slot before the frame is done (the ring keeps 64): its
-  // time is read now, waiting for the update, as such a frame waits for every sample anyway.
-  if (pipeline_.settings().sampling.samples_per_pixel > 1) read_cuda_times(submitted.deform);
   pipeline_.render(state, &timer_);
   if (profiler_) profiler_->end_frame();
   timer_.end_frame();
@@ -165,6 +173,7 @@ std::optional<FrameMeasurement> FrameLoop::complete_oldest(bool wait) {
   readback->ray_stats = measured.ray_stats;  // with the gl backend's trace time
   pipeline_.observe(measured.times, *readback);  // --reflections auto's cost model
   measured.final_image = std::move(readback->final_image);
+  measured.linear_image = std::move(readback->linear_image);
   if (profiler_) measured.scopes = std::move(profiler_->take_frame(oldest.index, /*wait=*/true)->scopes);
   measured.resident_bytes = resident_memory_bytes();
   measured.gpu_memory_used_bytes = gpu_memory_used_bytes();

@@ -60,6 +60,7 @@ struct FrameMeasurement {
   std::optional<std::uint64_t> resident_bytes;
   std::optional<std::uint64_t> gpu_memory_used_bytes;
   std::optional<ImageRgba8> final_image;  // with FrameLoopOptions::capture_final
+  std::optional<ImageRgbaF> linear_image;  // with FrameLoopOptions::capture_linear
   // With FrameLoopOptions::profile_scopes: the GPU time of every pass and GlPassScope, nested, in
   // tree order (gl/scope_profiler.h); empty otherwise.
   std::vector<ScopeTime> scopes;
@@ -73,6 +74,9 @@ struct FrameLoopOptions {
   // Read every frame's final image back (a pixel-pack buffer per frame in flight, no stall) into
   // FrameMeasurement::final_image.
   bool capture_final = false;
+  // Read every frame's linear colour (the tone map's input, FramePipeline::set_linear_capture) back
+  // into FrameMeasurement::linear_image, the same way (`glint render --format exr`).
+  bool capture_linear = false;
   // Wait for each frame before the next starts (submit() returns exactly the frame it submitted),
   // as the loop did before it was pipelined: for comparisons, and for reading a frame's other
   // images (debug views) from the pipeline right after it.
@@ -83,6 +87,11 @@ struct FrameLoopOptions {
   std::size_t keep_in_flight = 0;
   // Time every GlPassScope of each frame, nested (FrameMeasurement::scopes; gl/scope_profiler.h).
   bool profile_scopes = false;
+  // `glint render --hold-frame N`: every frame is posed at walkthrough frame N (its camera, its light
+  // and its deformed meshes, re-posed each frame as usual) while the frame submitted keeps counting:
+  // FrameState::frame, the glossy sampling sequence and the denoiser's history advance, so a still
+  // scene shows only what changes frame to frame (flicker). nullopt: frames are posed as numbered.
+  std::optional<int> hold_frame = std::nullopt;
 };
 
 class FrameLoop {
@@ -111,6 +120,9 @@ public:
 
   render::FramePipeline& pipeline() { return pipeline_; }
   const WalkthroughAnimation& animation() const { return animation_; }
+  // FrameLoopOptions::hold_frame from the next submit on; glint::Error for a frame outside the walkthrough.
+  void set_hold_frame(std::optional<int> frame);
+  std::optional<int> hold_frame() const { return hold_frame_; }
   PassTimingMethod pass_timing() const { return timer_.method(); }
   bool deforms() const { return deformers_.has_value(); }
 
@@ -145,6 +157,7 @@ private:
   std::optional<ScopeProfiler> profiler_;  // with FrameLoopOptions::profile_scopes
   bool serialized_ = false;
   std::size_t keep_in_flight_ = 0;
+  std::optional<int> hold_frame_;
   std::deque<InFlight> in_flight_;
   std::uint64_t submitted_ = 0;
   std::optional<double> last_completed_at_ms_;  // the previous frame's completion (timer's clock)

@@ -7,7 +7,8 @@
 #include "app/mpi/rank_devices.h"
 #include "app/mpi/render_share.h"
 #include "app/output_folder.h"
-#include "app/png_writer_thread.h"
+#include "app/frame_image_files.h"
+#include "app/image_writer_thread.h"
 #include "app/render_run_record.h"
 #include "app/video_writer.h"
 #include "backends/registry.h"
@@ -246,6 +247,11 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_flag("--debug-views", options.debug_views,
                     "Also write albedo, normals, positions, depth, shadow mask, SSR reflection and failure mask per frame");
   command->add_flag("--video", options.video, "Also encode DIR/walkthrough.mp4 with ffmpeg (must be on PATH)");
+  command->add_option("--format", options.format,
+                      "Image files: png (8-bit sRGB, tone mapped) or exr (linear float RGB before the tone map: "
+                      "frames and debug views; docs/render-command.md)")
+      ->check(CLI::IsMember({"png", "exr"}))
+      ->capture_default_str();
   command->add_flag("--timings-only", options.timings_only,
                     "Write no images, only timings.csv and run.json: frames follow each other without the "
                     "PNG encoding in between, so the GPU stays busy (for measurements)")
@@ -263,6 +269,18 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
                       "cuda or optix backend's structures in place) or cpu; default: gpu with --backend cuda or optix, "
                       "else cpu")
       ->check(CLI::IsMember({"gpu", "cpu"}));
+  command->add_option("--hold-frame", options.hold_frame,
+                      "Hold the scene still at walkthrough frame N: every frame rendered has frame N's camera, "
+                      "light and deformed meshes, while the frames (--frames: their numbers, file names, the "
+                      "glossy sampling sequence and the denoiser's history) still advance; for flicker on a "
+                      "still scene (docs/render-command.md)")
+      ->check([](const std::string& text) {
+        int frame = -1;
+        const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), frame);
+        return error == std::errc() && stop == text.data() + text.size() && frame >= 0
+                   ? std::string()
+                   : "\"" + text + "\": expected a walkthrough frame number (a whole number, 0 or more)";
+      });
   command->add_option("--blur-radius", options.blur_radius, "Reflection blur radius in pixels (0 = off)")
       ->check(CLI::Range(0, 32))
       ->capture_default_str();
@@ -351,6 +369,8 @@ int run_render_command(const RenderOptions& options) {
   // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
   const mpi::RankSession rank;
   const render::FramePipelineSettings settings = render_pipeline_settings(options);
+  if (options.video && writes_linear_images(options))
+    fail("--video needs --format png: the video is encoded from the 8-bit frames");
   // Checked before the scene is loaded, so that a typo costs no loading time. No --frames: a preview.
   std::optional<FrameSelection> selection;
   if (options.frames == "all") selection = FrameSelection::all();
@@ -395,10 +415,11 @@ int run_render_command(const RenderOptions& options) {
   HeadlessGlContext context;  // logs its renderer with --verbose
   const bool images = !options.timings_only;
   FrameLoopOptions loop_options{options.width, options.height, options.deform == "on", deforms_on_gpu(options)};
-  loop_options.capture_final = images;  // read back frames later through pixel-pack buffers, no stall
+  set_image_capture(options, loop_options);  // read back frames later through pixel-pack buffers, no stall
   // Debug views are read from the pipeline's images, which must still hold the frame.
   loop_options.serialized = options.debug_views;
   loop_options.profile_scopes = options.profile_scopes;
+  if (options.hold_frame >= 0) loop_options.hold_frame = options.hold_frame;
   FrameLoop loop(scene, settings, loop_options, pass_timing_for_renderer(context.renderer()));
   render::FramePipeline& pipeline = loop.pipeline();
 
@@ -411,21 +432,16 @@ int run_render_command(const RenderOptions& options) {
   std::optional<FfmpegVideoWriter> video;
   if (options.video)
     video.emplace(out.path() / "walkthrough.mp4", options.width, options.height, scene.walkthrough.frames_per_second);
-  // PNG encoding runs beside the loop (a bounded queue), so the GPU is not left idle meanwhile.
-  std::optional<PngWriterThread> png_writer;
-  if (images) png_writer.emplace();
+  // PNG and EXR encoding runs beside the loop (a bounded queue), so the GPU is not left idle meanwhile.
+  std::optional<ImageWriterThread> image_writer;
+  if (images) image_writer.emplace();
 
   ProgressBar progress("render", frames.size());
   const Stopwatch run_watch;
   // A frame that came back complete: its images go to the writer, its row to timings.csv.
   const auto keep = [&](FrameMeasurement& measured) {
-    if (measured.final_image) {
-      if (video) video->add_frame(*measured.final_image);
-      png_writer->write(out.frame_path(measured.frame), std::move(*measured.final_image));
-    }
-    if (options.debug_views)
-      for (render::DebugView& view : pipeline.read_debug_views())
-        png_writer->write(out.debug_view_path(measured.frame, view.name), std::move(view.image));
+    if (measured.final_image && video) video->add_frame(*measured.final_image);
+    if (image_writer) write_frame_image_files(*image_writer, out, options, measured, pipeline);
     timings.add_row(record.add_frame(measured));
     if (scopes)
       for (const ScopeTime& scope : measured.scopes)
@@ -440,7 +456,7 @@ int run_render_command(const RenderOptions& options) {
     for (FrameMeasurement& measured : loop.submit(frame)) keep(measured);
   }
   for (FrameMeasurement& measured : loop.drain()) keep(measured);
-  if (png_writer) png_writer->finish();  // every PNG on disk (or the first error) before timings.csv
+  if (image_writer) image_writer->finish();  // every image on disk (or the first error) before timings.csv
   progress.finish();
   if (video) video->finish();
   timings.commit();

@@ -31,11 +31,18 @@ struct RenderOptions {
   std::string out = "render-out";
   bool overwrite = false;         // replace an earlier run in `out` instead of refusing it
   bool debug_views = false;
+  // png|exr: frames and debug views as 8-bit sRGB PNGs or as linear float EXRs (the colour before the
+  // tone map; docs/render-command.md).
+  std::string format = "png";
   bool video = false;
   bool timings_only = false;      // no images: timings.csv and run.json only (keeps the GPU busy)
   bool profile_scopes = false;    // also scopes.csv: every pass's nested scopes' GPU times per frame
   std::string deform = "on";      // on|off: animate the deformable meshes
   std::string deform_on;          // gpu|cpu; empty: gpu with --backend cuda or optix, cpu otherwise
+  // --hold-frame N (FrameLoopOptions::hold_frame): camera, light and deformed meshes posed at
+  // walkthrough frame N for every frame rendered, while the frame numbers (sampling, denoiser history)
+  // advance; -1: off.
+  int hold_frame = -1;
   // Resolve and SSR tunables most worth changing from the command line; the rest keep defaults.
   int blur_radius = 2;
   // Glossy reflections (docs/glossy.md): roughness on|off, reflection samples per pixel, the

@@ -5,6 +5,7 @@
 #include "gl/gl_check.h"
 #include "render/debug_views.h"
 #include "render/render_targets.h"
+#include "render/scene_reflection_fade.h"
 #include "render/texture_readback.h"
 
 #include <algorithm>
@@ -25,14 +26,19 @@ void clear_reflection(GLuint texture) {
   check_gl("clearing the reflection image");
 }
 
-const FramePipelineSettings& validated(const FramePipelineSettings& settings) {
+// Validated, with the resolve's distance fade fitted to the scene (scene_reflection_fade.h).
+FramePipelineSettings validated(const FramePipelineSettings& settings, const Scene& scene) {
   settings.validate();
-  return settings;
+  FramePipelineSettings fitted = settings;
+  fitted.resolve = with_scene_fade(settings.resolve, scene);
+  return fitted;
 }
 
-// hybrid shadows draw the cube map at their own, reduced size.
+// hybrid shadows draw the cube map at their own, reduced size; the denoiser needs surface motion.
 RasterSettings raster_settings(const FramePipelineSettings& settings) {
   RasterSettings raster = settings.raster;
+  // The denoiser reprojects the deforming meshes by their own motion (render/surface_motion.h).
+  if (settings.resolve.denoise) raster.surface_motion = true;
   if (settings.shadows.method == ShadowMethod::hybrid)
     raster.shadow_map_size = std::max(1, raster.shadow_map_size / settings.shadows.hybrid_cube_divisor);
   return raster;
@@ -68,9 +74,9 @@ void FramePipelineSettings::validate() const {
 
 FramePipeline::FramePipeline(const Scene& scene, int width, int height, const FramePipelineSettings& settings)
     : scene_(&scene),
-      settings_(validated(settings)),
+      settings_(validated(settings, scene)),
       raster_(scene, width, height, raster_settings(settings_)),
-      resolve_(width, height, settings.resolve) {
+      resolve_(width, height, settings_.resolve) {
   if (uses_ssr(settings_.reflections)) ssr_.emplace(width, height, settings_.ssr);
   if (uses_ray_tracer(settings_)) tracer_ = build_ray_tracer(scene, settings_.ray_tracing);
   if (settings_.raster.primary == PrimaryVisibility::rt) raster_.trace_primary_visibility(*tracer_);
@@ -126,26 +132,34 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   }
   raster_.render(frame, timer, shadow);
   write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
+  // --reflections auto: per-tile decisions, or a whole frame of rays or of SSR (adaptive_reflections.h).
+  const ReflectionPath path =
+      adaptive_ ? adaptive_->begin_frame(frame.camera, slot, ray_traced_->runs()) : ReflectionPath::per_tile;
   if (adaptive_) {
+    const bool per_tile = path == ReflectionPath::per_tile;
     // Before SSR, which overwrites the failure mask the classification reads as last frame's.
-    run_timed_pass(timer, "classify", [&] {
-      adaptive_->classify({raster_.albedo_reflectivity(), raster_.world_position(), ssr_->failure_mask(),
-                           ssr_->reflection(), raster_.frame_constants().view_projection},
-                          frame.camera, slot);
-    });
-    ray_traced_->ray_list().set_tiles(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()});
+    if (per_tile)
+      run_timed_pass(timer, "classify", [&] {
+        adaptive_->classify({raster_.albedo_reflectivity(), raster_.world_position(), ssr_->failure_mask(),
+                             ssr_->reflection(), raster_.frame_constants().view_projection});
+      });
+    ssr_->set_tile_list(per_tile ? std::optional(adaptive_->pass().ssr_tiles()) : std::nullopt);
+    ray_traced_->ray_list().set_tiles(
+        per_tile ? std::optional(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()}) : std::nullopt);
   }
-  if (ssr_) {
+  if (ssr_ && path != ReflectionPath::all_rays) {
     run_timed_pass(timer, "ssr", [&] {
       ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
                  raster_.lit(), raster_.frame_constants_buffer()});
     });
     ssr_->request_counts(slot);  // outside the pass's time: a copy of 8 bytes and a fence
   }
-  if (ray_traced_) {
-    // rt: the ray tracer writes every reflective pixel of a cleared image; hybrid: SSR's failed ones.
-    if (!ssr_) clear_reflection(own_reflection_.id());
-    ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), timer);
+  if (ray_traced_ && path != ReflectionPath::all_ssr) {
+    // rt (and auto's all-rays frames): the ray tracer writes every reflective pixel of a cleared
+    // image; hybrid: SSR's failed ones.
+    const bool trace_all = !ssr_ || path == ReflectionPath::all_rays;
+    if (trace_all) clear_reflection(reflection_image());
+    ray_traced_->run(raster_, trace_all ? 0 : ssr_->failure_mask(), reflection_image(), timer);
   }
   if (adaptive_) adaptive_->finish_frame(slot);
   render_more_reflection_samples(slot);
@@ -153,12 +167,15 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
                  [&] {
     resolve_.run({raster_.lit(), raster_.albedo_reflectivity(), reflection_image(), raster_.world_position(),
                   raster_.world_normal_roughness(), raster_.frame_constants_buffer(),
-                  raster_.frame_constants().view_projection});
+                  raster_.frame_constants().view_projection, raster_.world_motion()});
   });
   final_captured_[slot] = final_readback_.has_value();
   if (final_readback_)
     final_readback_->capture_texture(slot, resolve_.final_image(), GL_RGBA, GL_UNSIGNED_BYTE,
                                      final_readback_->slot_bytes());
+  linear_captured_[slot] = linear_readback_.has_value();
+  if (linear_readback_)
+    linear_readback_->capture_texture(slot, resolve_.linear_image(), GL_RGBA, GL_FLOAT, linear_readback_->slot_bytes());
   ++frames_rendered_;
 }
 
@@ -202,25 +219,42 @@ void FramePipeline::set_final_capture(bool on) {
                           static_cast<std::size_t>(width()) * static_cast<std::size_t>(height()) * 4, "final image");
 }
 
+void FramePipeline::set_linear_capture(bool on) {
+  resolve_.set_linear_output(on);
+  if (!on) {
+    linear_readback_.reset();
+    return;
+  }
+  if (linear_readback_) return;
+  static_assert(kLinearColourFormat == GL_RGBA32F);  // read as GL_FLOAT, bit for bit
+  linear_readback_.emplace(kFramesInFlight, static_cast<std::size_t>(width()) * static_cast<std::size_t>(height()) *
+                                                sizeof(vec4),
+                           "linear image");
+}
+
 std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, bool wait) {
   if (frame >= frames_rendered_ || frames_rendered_ - frame > kFramesInFlight)
     fail("frame pipeline: readback of frame {} asked after {} frames (the last {} are kept)", frame, frames_rendered_,
          kFramesInFlight);
   const auto slot = static_cast<std::size_t>(frame % kFramesInFlight);
   FrameReadback readback;
-  if (ssr_) {
+  // auto's whole-frame paths skip SSR (all rays) or the rays (all SSR).
+  const ReflectionPath path = adaptive_ ? adaptive_->path(slot) : ReflectionPath::per_tile;
+  if (ssr_ && path != ReflectionPath::all_rays) {
     readback.ssr_counts = ssr_->requested_counts(slot, wait);
     if (!readback.ssr_counts) return std::nullopt;
   }
-  if (ray_traced_) {
-    // Pipeline frames and ray-traced runs go in step: every frame traces.
+  if (ray_traced_ && path != ReflectionPath::all_ssr) {
+    // Pipeline frames and ray-traced runs go in step: every frame traces (auto knows its frame's run).
     // With --spp N > 1 every sample traced; render() summed them (waiting for each).
-    readback.ray_stats = sample_mean_ ? sampled_ray_stats_[slot]
-                                      : ray_traced_->take_stats(ray_traced_->runs() - (frames_rendered_ - frame), wait);
+    const std::uint64_t run = adaptive_ ? *adaptive_->ray_run(slot) : ray_traced_->runs() - (frames_rendered_ - frame);
+    readback.ray_stats = sample_mean_ ? sampled_ray_stats_[slot] : ray_traced_->take_stats(run, wait);
     if (!readback.ray_stats) return std::nullopt;
   }
   if (adaptive_) {
-    readback.adaptive = adaptive_->take_stats(slot, wait);
+    readback.adaptive =
+        adaptive_->take_stats(slot, wait, readback.ssr_counts,
+                              readback.ray_stats ? std::optional(readback.ray_stats->reflective_pixels) : std::nullopt);
     if (!readback.adaptive) return std::nullopt;
   }
   if (final_readback_ && final_captured_[slot]) {
@@ -233,6 +267,16 @@ std::optional<FrameReadback> FramePipeline::take_readback(std::uint64_t frame, b
                   bytes.data() + static_cast<std::size_t>(height() - 1 - y) * row_bytes, row_bytes);
     readback.final_image = std::move(image);
   }
+  if (linear_readback_ && linear_captured_[slot]) {
+    const std::span<const std::byte> bytes = linear_readback_->read(slot, wait);
+    if (bytes.empty()) return std::nullopt;
+    ImageRgbaF image(width(), height());
+    const std::size_t row_bytes = static_cast<std::size_t>(width()) * sizeof(vec4);
+    for (int y = 0; y < height(); ++y)  // GL's rows are bottom first
+      std::memcpy(image.pixels.data() + static_cast<std::size_t>(y) * static_cast<std::size_t>(width()),
+                  bytes.data() + static_cast<std::size_t>(height() - 1 - y) * row_bytes, row_bytes);
+    readback.linear_image = std::move(image);
+  }
   return readback;
 }
 
@@ -242,6 +286,7 @@ void FramePipeline::observe(const FrameTimes& times, const FrameReadback& readba
   for (const PassTime& pass : times.passes) {
     if (pass.name == "ssr") sample.ssr_ms += pass.milliseconds;
     if (pass.name == "ray_list" || pass.name == "hit_shade") sample.ray_ms += pass.milliseconds;
+    if (pass.name == "classify") sample.classify_ms += pass.milliseconds;
   }
   if (readback.ssr_counts) sample.ssr_pixels = readback.ssr_counts->reflective;
   if (readback.ray_stats) {
@@ -253,6 +298,12 @@ void FramePipeline::observe(const FrameTimes& times, const FrameReadback& readba
 
 ImageRgba8 FramePipeline::read_final() const {
   return quantize_to_rgba8(read_texture_rgbaf(resolve_.final_image(), kFinalFormat, width(), height()));
+}
+
+ImageRgbaF FramePipeline::read_linear() const {
+  if (resolve_.linear_image() == 0)
+    fail("frame pipeline: read_linear() needs set_linear_capture(true) before the frame is rendered");
+  return read_texture_rgbaf(resolve_.linear_image(), kLinearColourFormat, width(), height());
 }
 
 std::optional<RayTraceFrameStats> FramePipeline::ray_trace_stats() {
@@ -268,31 +319,41 @@ std::optional<SsrCounts> FramePipeline::read_counts() const {
 
 std::vector<DebugView> FramePipeline::read_debug_views() const {
   std::vector<DebugView> views;
-  views.push_back({"albedo", albedo_view(raster_.read_rgbaf(RasterOutput::AlbedoReflectivity))});
-  views.push_back({"normals", normal_view(raster_.read_rgbaf(RasterOutput::WorldNormalRoughness))});
-  views.push_back({"positions", position_view(raster_.read_rgbaf(RasterOutput::WorldPosition), scene_->world_bounds())});
-  views.push_back({"depth", depth_view(raster_.read_rgbaf(RasterOutput::WorldPosition), raster_.frame_constants())});
-  views.push_back({"shadow_mask", grey_view(raster_.read_rgbaf(RasterOutput::ShadowMask))});
+  const ImageRgbaF albedo = raster_.read_rgbaf(RasterOutput::AlbedoReflectivity);
+  const ImageRgbaF normals = raster_.read_rgbaf(RasterOutput::WorldNormalRoughness);
+  const ImageRgbaF positions = raster_.read_rgbaf(RasterOutput::WorldPosition);
+  const ImageRgbaF shadow_mask = raster_.read_rgbaf(RasterOutput::ShadowMask);
+  views.push_back({"albedo", albedo_view(albedo), opaque(albedo)});
+  views.push_back({"normals", normal_view(normals), opaque(normals)});
+  views.push_back({"positions", position_view(positions, scene_->world_bounds()), opaque(positions)});
+  views.push_back({"depth", depth_view(positions, raster_.frame_constants()),
+                   view_depth(positions, raster_.frame_constants())});
+  views.push_back({"shadow_mask", grey_view(shadow_mask), red_as_grey(shadow_mask)});
   if (settings_.reflections == ReflectionMode::off) return views;
   if (adaptive_) {
-    const TileFrameReadback tiles = adaptive_->pass().read();
-    views.push_back({"tile_classes", tile_class_view(tiles.classes, adaptive_->pass().tile_columns(), width(), height())});
+    ImageRgba8 classes =
+        tile_class_view(adaptive_->last_classes(albedo, positions), adaptive_->pass().tile_columns(), width(), height());
+    ImageRgbaF colours = unit_colours(classes);
+    views.push_back({"tile_classes", std::move(classes), std::move(colours)});
   }
 
   const ImageRgbaF reflection = read_texture_rgbaf(reflection_image(), kReflectionFormat, width(), height());
   if (!ssr_) {
-    views.push_back({"traced_reflection", reflection_view(reflection)});
+    views.push_back({"traced_reflection", reflection_view(reflection), opaque(reflection)});
     return views;
   }
   ImageRgbaF failure_mask = read_texture_rgbaf(ssr_->failure_mask(), kFailureMaskFormat, width(), height());
   // auto: SSR wrote the mask in its own tiles only; rays-only tiles are traced wherever reflective.
-  if (adaptive_) mark_traced_tiles(failure_mask, adaptive_->pass().read().classes, adaptive_->pass().tile_columns());
+  if (adaptive_)
+    mark_traced_tiles(failure_mask, adaptive_->last_classes(albedo, positions), adaptive_->pass().tile_columns());
   // Hit shading writes exactly the failed pixels, so the mask splits the image into its two sources.
-  views.push_back({"ssr_reflection", reflection_view(masked(reflection, failure_mask, 0.0f))});
-  views.push_back({"failure_mask", grey_view(failure_mask)});
+  const ImageRgbaF from_ssr = masked(reflection, failure_mask, 0.0f);
+  views.push_back({"ssr_reflection", reflection_view(from_ssr), opaque(from_ssr)});
+  views.push_back({"failure_mask", grey_view(failure_mask), red_as_grey(failure_mask)});
   if (ray_traced_) {
-    views.push_back({"traced_reflection", reflection_view(masked(reflection, failure_mask, 1.0f))});
-    views.push_back({"reflection", reflection_view(reflection)});
+    const ImageRgbaF traced = masked(reflection, failure_mask, 1.0f);
+    views.push_back({"traced_reflection", reflection_view(traced), opaque(traced)});
+    views.push_back({"reflection", reflection_view(reflection), opaque(reflection)});
   }
   return views;
 }

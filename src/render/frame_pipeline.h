@@ -72,13 +72,17 @@ struct FrameReadback {
   std::optional<SsrCounts> ssr_counts;           // with SSR
   std::optional<RayTraceFrameStats> ray_stats;   // with ray tracing
   std::optional<ImageRgba8> final_image;         // with set_final_capture(true): read_final()'s pixels
+  std::optional<ImageRgbaF> linear_image;        // with set_linear_capture(true): read_linear()'s pixels
   std::optional<AdaptiveFrameStats> adaptive;    // --reflections auto: what its tiles were
 };
 
-// An image a frame produced besides the final one, made viewable as 8-bit RGBA.
+// An image a frame produced besides the final one, made viewable as 8-bit RGBA, and the linear
+// values it shows (debug_views.h says which: raw albedo, normals, positions, view depth, masks,
+// reflection radiance; a = 1), for `glint render --format exr`.
 struct DebugView {
   std::string name;  // file-name friendly: "albedo", "normals", ...
   ImageRgba8 image;
+  ImageRgbaF linear;
 };
 
 class FramePipeline {
@@ -105,6 +109,9 @@ public:
   std::uint64_t frames_rendered() const { return frames_rendered_; }
   // On: every later render() also copies its final image into a pixel-pack readback slot.
   void set_final_capture(bool on);
+  // On: the resolve also stores every frame's linear colour (exposure x (lit + reflectivity x
+  // reflection), the tone map's input) and render() copies it into a readback slot as RGBA32F.
+  void set_linear_capture(bool on);
   // Frame `frame`'s counters (and captured image), one of the last kFramesInFlight frames rendered:
   // nullopt while the GPU has not finished their copies and `wait` is false; with `wait` it waits.
   // glint::Error for an older or a future frame.
@@ -117,6 +124,9 @@ public:
 
   // The last frame's output, sRGB-encoded, top row first. Waits for the GPU.
   ImageRgba8 read_final() const;
+  // The last frame's linear colour, the tone map's input, top row first (a = 1): needs
+  // set_linear_capture(true) before that frame (glint::Error otherwise). Waits for the GPU.
+  ImageRgbaF read_linear() const;
   // The texture read_final() reads (kFinalFormat, bottom row first), rewritten by every render(): for
   // showing a frame on the same context without a host round trip (the viewer copies it on the GPU).
   GLuint final_texture() const { return resolve_.final_image(); }
@@ -167,6 +177,8 @@ private:
   std::uint64_t frames_rendered_ = 0;
   std::optional<ReadbackRing> final_readback_;  // with final capture: RGBA8, rows bottom first
   std::array<bool, kFramesInFlight> final_captured_{};  // per slot: that frame's image was captured
+  std::optional<ReadbackRing> linear_readback_;  // with linear capture: RGBA32F, rows bottom first
+  std::array<bool, kFramesInFlight> linear_captured_{};
   std::optional<ReflectionAccumulation> sample_mean_;  // with --spp N > 1
   std::array<RayTraceFrameStats, kFramesInFlight> sampled_ray_stats_{};  // per slot, with --spp N > 1
 };

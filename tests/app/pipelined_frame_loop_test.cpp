@@ -4,7 +4,7 @@
 // llvmpipe the wall-clock method finishes every frame before submit() returns; GL queries leave
 // frames in flight, which is what exercises the rings of queries and readback slots.
 #include "app/frame_loop.h"
-#include "app/png_writer_thread.h"
+#include "app/image_writer_thread.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "scene/presets.h"
@@ -112,7 +112,7 @@ TEST_F(PipelinedFrameLoop, WritesTheSerializedLoopsImagesAndCounts) {
 
       // The same PNG files: the serialized images written in line, the pipelined ones by the worker.
       TempFolder folder;
-      PngWriterThread writer(2);
+      ImageWriterThread writer(2);
       for (std::size_t i = 0; i < kFrames.size(); ++i) {
         const std::string name = "frame_" + std::to_string(kFrames[i]) + ".png";
         write_png(folder.path() / ("serialized_" + name), *serialized[i].final_image);
@@ -146,11 +146,11 @@ TEST_F(PipelinedFrameLoop, CapturedImageIsTheFinalImage) {
   EXPECT_EQ(measured.final_image->pixels, loop.pipeline().read_final().pixels);
 }
 
-TEST(PngWriterThread, WritesEveryQueuedFileWhole) {
+TEST(ImageWriterThread, WritesEveryQueuedFileWhole) {
   TempFolder folder;
   ImageRgba8 image(7, 5, glm::u8vec4(10, 20, 30, 255));
   {
-    PngWriterThread writer(1, 3);  // a queue of one: write() waits for the workers
+    ImageWriterThread writer(1, 3);  // a queue of one: write() waits for the workers
     for (int i = 0; i < 6; ++i) {
       image.at(i, 0) = glm::u8vec4(200, 0, 0, 255);
       writer.write(folder.path() / ("image_" + std::to_string(i) + ".png"), image);
@@ -167,10 +167,10 @@ TEST(PngWriterThread, WritesEveryQueuedFileWhole) {
     EXPECT_NE(entry.path().filename().string().front(), '.') << "temporary left behind: " << entry.path();
 }
 
-TEST(PngWriterThread, AFailedWriteIsOneErrorNamingTheFile) {
+TEST(ImageWriterThread, AFailedWriteIsOneErrorNamingTheFile) {
   TempFolder folder;
   const fs::path missing = folder.path() / "no_such_folder" / "frame_00001.png";
-  PngWriterThread writer;
+  ImageWriterThread writer;
   writer.write(missing, ImageRgba8(4, 4, glm::u8vec4(1)));
   try {
     writer.finish();

@@ -5,7 +5,8 @@
 #include "app/mpi/mpi_world.h"
 #include "app/mpi/work_share.h"
 #include "app/output_folder.h"
-#include "app/png_writer_thread.h"
+#include "app/frame_image_files.h"
+#include "app/image_writer_thread.h"
 #include "app/render_run_record.h"
 #include "app/video_writer.h"
 #include "core/csv_writer.h"
@@ -83,9 +84,10 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
   const bool images = !options.timings_only;
   // As run_render_command's loop.
   FrameLoopOptions loop_options{options.width, options.height, options.deform == "on", deforms_on_gpu(options)};
-  loop_options.capture_final = images;
+  set_image_capture(options, loop_options);
   loop_options.serialized = options.debug_views;
   loop_options.profile_scopes = options.profile_scopes;
+  if (options.hold_frame >= 0) loop_options.hold_frame = options.hold_frame;
   FrameLoop loop(scene, settings, loop_options, pass_timing_for_renderer(context.renderer()));
   render::FramePipeline& pipeline = loop.pipeline();
   // This rank's rows; rank 0 records every rank's in the run's record below.
@@ -104,14 +106,11 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
   const auto run = [&](std::size_t piece) -> nlohmann::json {
     const auto [first, end] = piece_range(piece);
     nlohmann::json rows = nlohmann::json::array(), scopes = nlohmann::json::array();
-    // The piece's PNGs are on disk before it counts as done (rank 0 reads them for the video).
-    std::optional<PngWriterThread> png_writer;
-    if (images) png_writer.emplace();
+    // The piece's images are on disk before it counts as done (rank 0 reads the PNGs for the video).
+    std::optional<ImageWriterThread> image_writer;
+    if (images) image_writer.emplace();
     const auto keep = [&](FrameMeasurement& measured) {
-      if (measured.final_image) png_writer->write(out.frame_path(measured.frame), std::move(*measured.final_image));
-      if (options.debug_views)
-        for (render::DebugView& view : pipeline.read_debug_views())
-          png_writer->write(out.debug_view_path(measured.frame, view.name), std::move(view.image));
+      if (image_writer) write_frame_image_files(*image_writer, out, options, measured, pipeline);
       rows.push_back(row_texts(rank_record.add_frame(measured)));
       for (const ScopeTime& scope : measured.scopes)
         scopes.push_back(row_texts({measured.frame, scope.path, scope.depth, scope.milliseconds}));
@@ -120,7 +119,7 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
     for (std::size_t i = first; i < end; ++i)
       for (FrameMeasurement& measured : loop.submit(frames[i])) keep(measured);
     for (FrameMeasurement& measured : loop.drain()) keep(measured);
-    if (png_writer) png_writer->finish();
+    if (image_writer) image_writer->finish();
     nlohmann::json result = {{"rows", rows}, {"scopes", scopes}, {"rank", world().rank}};
     if (const rt::RayTracer* tracer = pipeline.ray_tracer()) {
       const rt::RayTracerStats stats = tracer->stats();

@@ -1,4 +1,4 @@
-#include "app/png_writer_thread.h"
+#include "app/image_writer_thread.h"
 
 #include "core/error.h"
 #include "core/log.h"
@@ -11,7 +11,7 @@
 
 namespace glint {
 
-PngWriterThread::PngWriterThread(std::size_t max_queued, std::size_t workers)
+ImageWriterThread::ImageWriterThread(std::size_t max_queued, std::size_t workers)
     : max_queued_(max_queued == 0 ? 1 : max_queued) {
   if (workers == 0) {
     const unsigned hardware = std::thread::hardware_concurrency();
@@ -20,7 +20,7 @@ PngWriterThread::PngWriterThread(std::size_t max_queued, std::size_t workers)
   for (std::size_t i = 0; i < workers; ++i) workers_.emplace_back([this] { work(); });
 }
 
-PngWriterThread::~PngWriterThread() {
+ImageWriterThread::~ImageWriterThread() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -30,19 +30,27 @@ PngWriterThread::~PngWriterThread() {
   if (error_ && !error_reported_) log_warning("{}", *error_);
 }
 
-void PngWriterThread::write(std::filesystem::path path, ImageRgba8 image) {
+void ImageWriterThread::write(std::filesystem::path path, ImageRgba8 image) {
+  queue({std::move(path), std::move(image)});
+}
+
+void ImageWriterThread::write(std::filesystem::path path, ImageRgbaF image, ExrText text) {
+  queue({std::move(path), LinearImage{std::move(image), std::move(text)}});
+}
+
+void ImageWriterThread::queue(Job job) {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return error_ || queue_.size() < max_queued_; });
   if (error_) {
     error_reported_ = true;
     throw Error(*error_);
   }
-  queue_.emplace_back(std::move(path), std::move(image));
+  queue_.push_back(std::move(job));
   lock.unlock();
   changed_.notify_all();
 }
 
-void PngWriterThread::finish() {
+void ImageWriterThread::finish() {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return error_ || (queue_.empty() && writing_ == 0); });
   if (error_) {
@@ -51,7 +59,7 @@ void PngWriterThread::finish() {
   }
 }
 
-void PngWriterThread::work() {
+void ImageWriterThread::work() {
   // SIGINT and SIGTERM go to the render loop's thread, which decides when to stop (core/interruption.h).
   sigset_t signals;
   sigemptyset(&signals);
@@ -63,14 +71,15 @@ void PngWriterThread::work() {
   while (true) {
     changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
     if (queue_.empty()) return;  // stopping, with every file written
-    auto [path, image] = std::move(queue_.front());
+    Job job = std::move(queue_.front());
     queue_.pop_front();
     ++writing_;
     lock.unlock();
     changed_.notify_all();  // room in the queue
     std::optional<std::string> failure;
     try {
-      write_png(path, image);
+      if (const auto* linear = std::get_if<LinearImage>(&job.image)) write_exr(job.path, linear->image, linear->text);
+      else write_png(job.path, std::get<ImageRgba8>(job.image));
     } catch (const std::exception& error) {
       failure = error.what();
     }
