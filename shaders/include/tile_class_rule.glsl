@@ -9,7 +9,8 @@ const uint kTileRtOnly = 3u;
 uint classify_tile(uint reflective, uint known, uint failed_known, float ssr_only_at_most, float rt_at_least,
                    float min_known_fraction) {
   if (reflective == 0u) return kTileNone;
-  if (known == 0u || float(known) < min_known_fraction * float(reflective)) return kTileSsrFallback;
+  if (known == 0u || float(known) < min_known_fraction * float(reflective))
+    return rt_at_least <= 0.0 ? kTileRtOnly : kTileSsrFallback;
   // render::failure_rate's integer division, bit for bit (a float division may be off by 2.5 ulp).
   const float f = float((failed_known * 65536u) / known) / 65536.0;
   if (f <= ssr_only_at_most) return kTileSsrOnly;

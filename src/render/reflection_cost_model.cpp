@@ -25,19 +25,25 @@ void AffineCostFit::add(double items, double ms) {
   t_ = kDecay * t_ + ms;
   nn_ = kDecay * nn_ + items * items;
   nt_ = kDecay * nt_ + items * ms;
-}
-
-std::optional<double> AffineCostFit::slope() const {
-  if (w_ <= 0.0) return std::nullopt;
   const double mean_n = n_ / w_, mean_t = t_ / w_;
   const double var_n = nn_ / w_ - mean_n * mean_n;
   const double deviation = std::sqrt(std::max(0.0, var_n));
-  if (deviation < std::max(0.1 * mean_n, static_cast<double>(kMinCostSampleWork))) return std::nullopt;
-  const double cov = nt_ / w_ - mean_n * mean_t;
-  return std::max(0.0, cov / var_n);
+  // Points that all did about the same work say nothing new about the slope: keep the last one.
+  if (deviation < std::max(0.1 * mean_n, static_cast<double>(kMinCostSampleWork))) return;
+  slope_ = std::max(0.0, (nt_ / w_ - mean_n * mean_t) / var_n);
 }
 
-ReflectionCostModel::ReflectionCostModel(ReflectionCosts prior, std::optional<ReflectionCosts> fixed)
+std::optional<CostLine> AffineCostFit::line() const {
+  if (!slope_ || w_ <= 0.0) return std::nullopt;
+  const double mean_n = n_ / w_, mean_t = t_ / w_;
+  const double fixed = mean_t - *slope_ * mean_n;
+  // A negative fixed part (noise, or a slope from other times) would make the line undershoot small
+  // work and overshoot this: the line through the origin and the points' mean instead.
+  if (fixed < 0.0) return CostLine{0.0, mean_n > 0.0 ? mean_t / mean_n : *slope_};
+  return CostLine{fixed, *slope_};
+}
+
+ReflectionCostModel::ReflectionCostModel(ReflectionCosts prior, std::optional<ReflectionStageCosts> fixed)
     : average_(prior), fixed_(fixed) {}
 
 void ReflectionCostModel::observe(const CostSample& sample) {
@@ -50,11 +56,25 @@ void ReflectionCostModel::observe(const CostSample& sample) {
     ray_fit_.add(sample.rays, sample.ray_ms);
     if (sample.rays >= kMinCostSampleWork) fold(average_.ms_per_ray, ray_samples_, sample.ray_ms / sample.rays);
   }
+  if (sample.classify_ms > 0.0) fold(classify_ms_, classify_samples_, sample.classify_ms);
 }
 
-ReflectionCosts ReflectionCostModel::costs() const {
+ReflectionCosts ReflectionCostModel::costs() const { return stage_costs().marginal; }
+
+ReflectionStageCosts ReflectionCostModel::stage_costs() const {
   if (fixed_) return *fixed_;
-  return {ssr_fit_.slope().value_or(average_.ms_per_ssr_pixel), ray_fit_.slope().value_or(average_.ms_per_ray)};
+  ReflectionStageCosts stages;
+  stages.marginal = average_;
+  if (const std::optional<CostLine> ssr = ssr_fit_.line()) {
+    stages.marginal.ms_per_ssr_pixel = ssr->per_item_ms;
+    stages.ssr_fixed_ms = ssr->fixed_ms;
+  }
+  if (const std::optional<CostLine> ray = ray_fit_.line()) {
+    stages.marginal.ms_per_ray = ray->per_item_ms;
+    stages.ray_fixed_ms = ray->fixed_ms;
+  }
+  stages.classify_ms = classify_ms_;
+  return stages;
 }
 
 }  // namespace glint::render

@@ -2,21 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace glint::render {
 namespace {
-
-bool known_enough(const TileEvidence& tile, const TileThresholds& thresholds) {
-  return tile.known > 0 &&
-         static_cast<float>(tile.known) >= thresholds.min_known_fraction * static_cast<float>(tile.reflective);
-}
-
-// In steps of 2^-16, by an integer division: the GLSL twin computes the same bits, where a float
-// division would not (GLSL allows 2.5 ulp; NVIDIA's differed from the host's at 3/30).
-float failure_rate(const TileEvidence& tile) {
-  return static_cast<float>((tile.failed_known * 65536u) / tile.known) / 65536.0f;
-}
 
 double tile_rays(const TileEvidence& tile, TileClass tile_class, float unknown_failure_rate,
                  const TileThresholds& thresholds) {
@@ -32,13 +22,15 @@ double tile_rays(const TileEvidence& tile, TileClass tile_class, float unknown_f
 // The thresholds that minimise the cost of every tile at full quality (SSR only within the target).
 TileThresholds cost_optimal(const ThresholdInputs& inputs) {
   TileThresholds thresholds;
-  const double ssr = inputs.costs.ms_per_ssr_pixel, ray = inputs.costs.ms_per_ray;
-  if (!(ray > 0.0)) {  // no measurement of rays yet: SSR first, rays where it fails
+  const double ssr = std::max(0.0, inputs.costs.ms_per_ssr_pixel), ray = std::max(0.0, inputs.costs.ms_per_ray);
+  if (!(ssr > 0.0)) {  // SSR costs nothing more per pixel: SSR first, rays where it fails
     thresholds.ssr_only_at_most = inputs.max_unreflected_fraction;
     thresholds.rt_at_least = 1.0f;
     return thresholds;
   }
-  const double ratio = std::max(0.0, ssr) / ray;
+  // A ray that costs nothing more (a GPU whose trace time hardly grows with the rays) is the
+  // cheapest choice everywhere, not a missing measurement.
+  const double ratio = ray > 0.0 ? ssr / ray : std::numeric_limits<double>::infinity();
   // Rays alone cost R c_ray, SSR + rays R c_ssr + f R c_ray: rays alone from f = 1 - c_ssr / c_ray.
   thresholds.rt_at_least = static_cast<float>(std::clamp(1.0 - ratio, 0.0, 1.0));
   // SSR only saves rays only while SSR is the cheaper of the two per pixel.
@@ -53,9 +45,22 @@ struct KnownTile {
 
 }  // namespace
 
+bool known_enough(const TileEvidence& tile, const TileThresholds& thresholds) {
+  return tile.known > 0 &&
+         static_cast<float>(tile.known) >= thresholds.min_known_fraction * static_cast<float>(tile.reflective);
+}
+
+// In steps of 2^-16, by an integer division: the GLSL twin computes the same bits, where a float
+// division would not (GLSL allows 2.5 ulp; NVIDIA's differed from the host's at 3/30).
+float failure_rate(const TileEvidence& tile) {
+  return static_cast<float>((tile.failed_known * 65536u) / tile.known) / 65536.0f;
+}
+
 TileClass classify_tile(const TileEvidence& tile, const TileThresholds& thresholds) {
   if (tile.reflective == 0) return TileClass::none;
-  if (!known_enough(tile, thresholds)) return TileClass::ssr_fallback;
+  // Without history SSR + rays reflects the tile and learns its failure rate, unless rays win at any
+  // failure rate (rt_at_least <= 0): then what SSR would say does not matter.
+  if (!known_enough(tile, thresholds)) return thresholds.rt_at_least <= 0.0f ? TileClass::rt_only : TileClass::ssr_fallback;
   const float f = failure_rate(tile);
   if (f <= thresholds.ssr_only_at_most) return TileClass::ssr_only;
   if (f >= thresholds.rt_at_least) return TileClass::rt_only;
@@ -97,6 +102,8 @@ TileThresholds choose_tile_thresholds(std::span<const TileEvidence> tiles, const
     }
     i = end;
   }
+  // Tiles without history follow rt_at_least too (classify_tile): count again.
+  rays = expected_rays(tiles, thresholds, inputs.unknown_failure_rate);
   if (rays <= budget) return thresholds;
   // 2. SSR + rays tiles become SSR only, lowest f first: each saves f R rays and leaves them unreflected.
   //    Tiles of one failure rate move together (a threshold cannot split them); a group whose move

@@ -45,10 +45,15 @@ struct TileThresholds {
   float rt_at_least = 1.0f;       // otherwise f >= this: rays only; else SSR + rays
   // A tile with fewer known pixels than this fraction of its reflective ones gets SSR + rays: it is
   // new on screen (or its surface was), and SSR there both reflects it and learns its failure rate.
+  // Where rays win at any failure rate (rt_at_least <= 0) it gets rays only instead.
   float min_known_fraction = 0.5f;
 };
 
 TileClass classify_tile(const TileEvidence& tile, const TileThresholds& thresholds);
+// Whether enough of the tile's reflective pixels are known for its failure rate to count.
+bool known_enough(const TileEvidence& tile, const TileThresholds& thresholds);
+// failed_known / known (known > 0), in the steps the GLSL twin computes bit for bit.
+float failure_rate(const TileEvidence& tile);
 
 struct ReflectionCosts {
   double ms_per_ssr_pixel = 0.0;  // SSR pass time per reflective pixel it marched

@@ -156,7 +156,7 @@ TEST(ReflectionCostModelTest, TheCostIsTheMarginalOneOnceTheWorkVaries) {
   model.observe({0.0, 0, 6.0, 5000});
   EXPECT_NEAR(model.costs().ms_per_ray, 0.001, 1e-12);
 
-  const ReflectionCostModel fixed(ReflectionCosts{1.0, 1.0}, ReflectionCosts{3.0, 4.0});
+  const ReflectionCostModel fixed(ReflectionCosts{1.0, 1.0}, ReflectionStageCosts{{3.0, 4.0}, 0.0, 0.0, 0.0});
   EXPECT_DOUBLE_EQ(fixed.costs().ms_per_ray, 4.0);
 }
 
