@@ -31,6 +31,8 @@ void main() {
   uv = vec2(position_u.w, normal_v.w);
   material = instance.material;
   // gl_VertexID includes the draw's base vertex: the vertex's index into the scene's vertex buffer.
-  world_motion = write_motion != 0 ? vertex_world_motion(instance.model, uint(gl_VertexID), position_u.xyz) : vec3(0.0);
+  world_motion = write_motion != 0 && mesh_moves[instance.mesh] != 0u
+                     ? vertex_world_motion(instance.model, uint(gl_VertexID), position_u.xyz)
+                     : vec3(0.0);
   gl_Position = view_projection * world;
 }

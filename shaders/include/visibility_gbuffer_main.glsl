@@ -39,18 +39,19 @@ uniform int write_motion;
 
 // Previous minus current world position of the point with weights (1 - u - v, u, v) of triangle
 // `prim` of instance `instance_index`: the corners' displacements (exactly 0 where a corner did not
-// move) interpolated with the weights surface_point() takes.
+// move) interpolated with the weights surface_point() takes; 0 without a look at the vertices for a
+// mesh that does not deform.
 vec3 surface_world_motion(uint instance_index, uint prim, vec2 hit_uv) {
   const GpuInstance instance = instances[instance_index];
+  if (mesh_moves[instance.mesh] == 0u) return vec3(0.0);
   const GpuMeshRange range = mesh_ranges[instance.mesh];
   const uint first = range.first_index + 3u * prim;
-  const vec3 weights = vec3(1.0 - hit_uv.x - hit_uv.y, hit_uv.x, hit_uv.y);
-  vec3 motion = vec3(0.0);
-  for (int i = 0; i < 3; ++i) {
-    const uint vertex = range.base_vertex + indices[first + uint(i)];
-    motion += weights[i] * vertex_world_motion(instance.model, vertex, vertices[vertex].position_u.xyz);
-  }
-  return motion;
+  const uint v0 = range.base_vertex + indices[first];
+  const uint v1 = range.base_vertex + indices[first + 1u];
+  const uint v2 = range.base_vertex + indices[first + 2u];
+  return (1.0 - hit_uv.x - hit_uv.y) * vertex_world_motion(instance.model, v0, vertices[v0].position_u.xyz) +
+         hit_uv.x * vertex_world_motion(instance.model, v1, vertices[v1].position_u.xyz) +
+         hit_uv.y * vertex_world_motion(instance.model, v2, vertices[v2].position_u.xyz);
 }
 
 // Weights (of corners 0, 1, 2) of the point of the triangle with clip-space corners `clip` that

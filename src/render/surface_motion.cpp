@@ -4,6 +4,7 @@
 #include "gl/gl_check.h"
 
 #include <cstddef>
+#include <span>
 
 namespace glint::render {
 
@@ -16,11 +17,15 @@ SurfaceMotion::SurfaceMotion(const Scene& scene, const GpuScene& gpu_scene, int 
   const auto bytes = static_cast<GLsizeiptr>(gpu_scene.vertex_count() * sizeof(GpuVertex));
   previous_vertices_ = create_buffer(static_cast<std::size_t>(bytes), nullptr, 0);
   glCopyNamedBufferSubData(gpu_scene.vertex_buffer(), previous_vertices_.id(), 0, 0, bytes);
+  std::vector<std::uint32_t> flags(gpu_scene.mesh_ranges().size(), 0u);
+  for (const std::uint32_t mesh : moving_meshes_) flags.at(mesh) = 1u;
+  moving_mesh_flags_ = create_buffer(std::span<const std::uint32_t>(flags));
   check_gl("surface motion: set-up");
 }
 
 void SurfaceMotion::bind_previous_vertices() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPreviousVertexBufferBinding, previous_vertices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMovingMeshBinding, moving_mesh_flags_.id());
 }
 
 void SurfaceMotion::keep_vertices(const GpuScene& gpu_scene) {

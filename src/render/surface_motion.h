@@ -27,12 +27,14 @@ namespace glint::render {
 
 inline constexpr GLenum kWorldMotionFormat = GL_RGBA16F;
 inline constexpr GLuint kPreviousVertexBufferBinding = 29;
+inline constexpr GLuint kMovingMeshBinding = 30;  // uint per mesh: 1 deforms, 0 static
 
 class SurfaceMotion {
 public:
   // The previous vertices start as `gpu_scene`'s current ones (no motion on the first frame).
   SurfaceMotion(const Scene& scene, const GpuScene& gpu_scene, int width, int height);
 
+  // Binds the previous vertices and the per-mesh moving flags (static meshes skip the vertex reads).
   void bind_previous_vertices() const;
   // This frame's vertices become the next frame's previous ones: a GPU copy of the deforming meshes'
   // ranges (none for a static scene). Call after the G-buffer pass.
@@ -43,6 +45,7 @@ public:
 private:
   GlTexture world_motion_;
   GlBuffer previous_vertices_;
+  GlBuffer moving_mesh_flags_;
   std::vector<std::uint32_t> moving_meshes_;
 };
 
