@@ -21,6 +21,7 @@
 #include "backends/registry.h"
 #include "core/interruption.h"
 #include "app/output_folder.h"
+#include "app/time_limit.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -260,6 +261,20 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
                     "Smoke run: 96x54, 4 frames per cell, cpu backend, sah, refit, atrium-simple; glossy: frame 1800 only, "
                     "a 16-sample reference, 3 flicker frames (flags given explicitly still apply)");
   command->add_flag("--no-plot", options.no_plot, "Do not run tools/plot_bench.py (report.md says how to)");
+  command->add_option("--time-limit", options.time_limit,
+                      "paper: start no cell (under mpirun: no piece) once this long has passed since the start, "
+                      "e.g. 7h or 50m or 600 (seconds); the cells under way finish and are kept, the run exits "
+                      "with 75 and the same command resumes it")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            try {
+              parse_time_limit_seconds("--time-limit", text);
+              return std::string();
+            } catch (const Error& error) {
+              return std::string(error.what());
+            }
+          },
+          "DURATION"));
   command->add_option("--out", options.out, "Output folder (created if missing; a run in it is resumed)")->required();
   command->callback([command, &options] {
     for (const char* flag : {"--scene", "--simple-scene", "--backends", "--accels", "--updates", "--frames", "--stride",
@@ -271,9 +286,12 @@ void add_bench_command(CLI::App& app, BenchOptions& options) {
 
 int run_bench_command(const BenchOptions& given_options) {
   // Under mpirun: this rank's GPU, chosen before any GL or CUDA call (nothing changes with one rank).
-  const mpi::RankSession rank;
+  mpi::RankSession rank;
   const BenchOptions options = with_quick_defaults(given_options);
   check_options(options);
+  const TimeLimit time_limit = TimeLimit::from_flag("--time-limit", options.time_limit);
+  if (!options.time_limit.empty() && options.experiment != "paper")
+    fail("--time-limit: only --experiment paper keeps its finished cells to resume from");
   if (options.experiment == "adaptive") return bench::run_adaptive_experiment(options);
   if (options.experiment == "glossy") return bench::run_glossy_experiment(options);
   const std::vector<std::string> known_backends = backends::backend_names();
@@ -330,14 +348,24 @@ int run_bench_command(const BenchOptions& given_options) {
     std::vector<mpi::BenchCellPlan> plans;
     for (const PlannedCell& planned : cells) plans.push_back({&planned.cell, &planned.frames, planned.to_run});
     const std::optional<mpi::SharedBenchRun> shared =
-        mpi::run_bench_shared(plans, scenes, cell_settings, context, out, progress, rank.about());
+        mpi::run_bench_shared(plans, scenes, cell_settings, context, out, progress, rank.about(), time_limit.until());
     if (!shared) return 0;  // rank 0 writes the summary
+    rank.shared_work_over();  // every other rank has stopped or retired
     for (std::size_t i = 0; i < cells.size(); ++i)
       if (shared->outcomes[i]) {
         cells[i].outcome = *shared->outcomes[i];
         cells[i].to_run = false;
       }
     distribution = shared->distribution;
+    if (shared->time_limit_reached) {
+      std::size_t finished = 0;
+      for (const PlannedCell& planned : cells)
+        finished += planned.outcome.state == CellOutcome::State::done && !planned.to_run ? 1 : 0;
+      progress.finish();
+      throw TimeLimitReached(fmt::format("bench: the time limit ({}) has passed; {} of {} cells are done in {} (and the "
+                                         "finished ranges of split cells in cells/parts/); the same command resumes the run",
+                                         time_limit.text(), finished, cells.size(), out.string()));
+    }
     // mpirun passes a Ctrl-C or SIGTERM to every rank: the cells left are interrupted, not failed,
     // and, as in one process, no summary is written until the same command has run them.
     if (interruption_requested()) {
@@ -354,6 +382,12 @@ int run_bench_command(const BenchOptions& given_options) {
   for (const PlannedCell& planned : cells) done += planned.outcome.resumed ? 1 : 0;
   for (PlannedCell& planned : cells) {
     if (!planned.to_run) continue;
+    if (time_limit.passed()) {
+      progress.finish();
+      throw TimeLimitReached(fmt::format("bench: the time limit ({}) has passed; {} of {} cells are done in {}; the same "
+                                         "command resumes the run",
+                                         time_limit.text(), done, cells.size(), out.string()));
+    }
     try {
       bench::run_cell(planned.cell, scenes.at(planned.cell.scene), planned.frames, cell_settings, context, out, progress);
       planned.outcome = {CellOutcome::State::done, "", false};

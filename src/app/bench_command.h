@@ -32,6 +32,7 @@ struct BenchOptions {
   // camera's warm-up and its measured series)
   int reference_spp = 256;
   int flicker_frames = 16;
+  std::string time_limit;  // paper: no cell starts after this long (app/time_limit.h); empty: none
   bool quick = false;   // smoke run: tiny resolution, few frames, cpu backend, atrium-simple
   bool no_plot = false;
   std::string out;

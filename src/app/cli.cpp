@@ -6,6 +6,7 @@
 #include "app/devices_command.h"
 #include "app/info_command.h"
 #include "app/render_command.h"
+#include "app/time_limit.h"
 #include "core/error.h"
 #include "core/interruption.h"
 #include "core/log.h"
@@ -92,6 +93,9 @@ int run_cli(int argc, char** argv, const std::vector<CliCommand>& more) {
   } catch (const Interrupted& e) {
     std::fprintf(stderr, "glint: %s\n", e.what());
     return interrupted_exit_code();
+  } catch (const TimeLimitReached& e) {
+    std::fprintf(stderr, "glint: %s\n", e.what());
+    return kTimeLimitExitCode;
   } catch (const Error& e) {
     std::fprintf(stderr, "glint: error: %s\n", e.what());
     return 1;

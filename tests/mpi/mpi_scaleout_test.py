@@ -12,7 +12,8 @@ One CTest test per case (cmake/GlintMpi.cmake registers them as Mpi.<case>):
                 (GLINT_TEST_MPI_FAIL_RANK=1): reported, and the rest completes with the same results
   interrupted   -np 2 bench sent SIGTERM once its first cell is written: it says it was interrupted
                 (no cell called failed, no summary.json) and the same command resumes it to the
-                same results as one process
+                same results as one process; -np 2 bench --time-limit 0 hands out no piece, exits
+                with 75 and writes no summary
 Exit 77 (skipped) when glint was built without MPI. The one-process runs are made once per binary
 and shared by the cases (a lock keeps parallel cases from making them twice).
 """
@@ -232,6 +233,17 @@ def main():
         if len(kept) > 0 and "kept from an earlier run" not in result.stdout:
             fail(f"the resumed run kept none of the {len(kept)} finished cells:\n{result.stdout}")
         check_bench(baseline("bench-frames-12", args), shared, 2)
+        limited = shared + "-time-limit"
+        if os.path.exists(limited):
+            shutil.rmtree(limited)
+        command, env = mpirun_command(2, args + ["--time-limit", "0"], limited)
+        result = subprocess.run(command, capture_output=True, text=True, env=env, timeout=300)
+        if result.returncode != 75:
+            fail(f"--time-limit 0 under mpirun exited with {result.returncode}, not 75:\n{result.stderr}")
+        if "time limit (0) has passed; 0 of" not in result.stderr:
+            fail(f"--time-limit 0 under mpirun does not say the limit stopped it:\n{result.stderr}")
+        if os.path.exists(os.path.join(limited, "summary.json")):
+            fail("the run stopped by its time limit wrote summary.json")
     else:
         fail(f"unknown case {case}")
     print(f"{case}: same results as one process")

@@ -83,6 +83,24 @@ TEST(PieceScheduler, PiecesNoRankCanTakeFailInsteadOfWaiting) {
   EXPECT_EQ(scheduler.next(0).answer, Answer::stop);
 }
 
+TEST(PieceScheduler, OnceClosedHandsOutNothingAndLeavesTheQueuedPiecesQueued) {
+  PieceScheduler scheduler(4, 2);
+  ASSERT_EQ(scheduler.next(0).piece, 0u);
+  ASSERT_EQ(scheduler.next(1).piece, 1u);
+  scheduler.close();  // a time limit passed
+  EXPECT_EQ(scheduler.next(0).answer, Answer::stop);
+  // The pieces in flight still finish (or fail) as before.
+  scheduler.finished(0, 0);
+  scheduler.failed(1, 1, "backend error", false);
+  EXPECT_EQ(scheduler.next(1).answer, Answer::stop);
+  EXPECT_EQ(scheduler.piece(0).state, State::done);
+  // Left for the next run: not failed, not run.
+  EXPECT_EQ(scheduler.piece(1).state, State::queued);
+  EXPECT_EQ(scheduler.piece(2).state, State::queued);
+  EXPECT_TRUE(scheduler.piece(2).attempts.empty());
+  EXPECT_FALSE(scheduler.all_resolved());
+}
+
 TEST(PieceScheduler, RejectsAReportOfAPieceTheRankIsNotRunning) {
   PieceScheduler scheduler(1, 2);
   (void)scheduler.next(0);

@@ -170,7 +170,8 @@ std::string part_id(const Cell& cell, int first_frame, int last_frame) {
 std::optional<SharedBenchRun> run_bench_shared(const std::vector<BenchCellPlan>& plans,
                                                const std::map<std::string, Scene>& scenes,
                                                const bench::CellRunSettings& settings, const HeadlessGlContext& context,
-                                               const fs::path& out, ProgressBar& progress, const nlohmann::json& about) {
+                                               const fs::path& out, ProgressBar& progress, const nlohmann::json& about,
+                                               std::optional<std::chrono::steady_clock::time_point> hand_out_until) {
   // Every rank planned from the same files; none is written before all have (rank 0 would otherwise
   // finish a cell that a slower rank then plans as kept, and their lists of pieces would differ).
   barrier();
@@ -201,12 +202,16 @@ std::optional<SharedBenchRun> run_bench_shared(const std::vector<BenchCellPlan>&
                     out, progress);
     return {{"rank", world().rank}, {"host", world().host}};
   };
-  const std::optional<ShareResult> shared =
-      share_pieces(pieces.size(), run, rank_about, {}, [&](std::size_t index) { progress.tick(pieces[index].ticks); });
+  WorkShareOptions share_options;
+  share_options.hand_out_until = hand_out_until;
+  const std::optional<ShareResult> shared = share_pieces(pieces.size(), run, rank_about, share_options,
+                                                         [&](std::size_t index) { progress.tick(pieces[index].ticks); });
   if (!shared) return std::nullopt;
 
   SharedBenchRun result;
   result.outcomes.resize(plans.size());
+  result.time_limit_reached = shared->queued_pieces() > 0;
+  std::set<std::size_t> left_cells;  // a piece of theirs was left queued at the time limit
   // Whole cells: done or failed as the piece went. Split cells: joined once every range is finished.
   std::map<std::size_t, std::vector<std::string>> split_failures;
   std::set<std::size_t> split_cells;
@@ -218,6 +223,10 @@ std::optional<SharedBenchRun> run_bench_shared(const std::vector<BenchCellPlan>&
       retried.push_back({{"piece", piece_text(plans[piece.cell], piece)},
                          {"state", outcome.state == PieceScheduler::State::done ? "done" : "failed"},
                          {"errors", attempts_text(outcome)}});
+    if (outcome.state == PieceScheduler::State::queued) {
+      left_cells.insert(piece.cell);
+      continue;
+    }
     if (!piece.whole) {
       split_cells.insert(piece.cell);
       if (outcome.state != PieceScheduler::State::done)
@@ -235,6 +244,7 @@ std::optional<SharedBenchRun> run_bench_shared(const std::vector<BenchCellPlan>&
   std::size_t split_count = 0;
   for (const std::size_t c : split_cells) {
     ++split_count;
+    if (left_cells.contains(c)) continue;  // its finished ranges wait in cells/parts/ for the rest
     if (split_failures.contains(c)) {
       std::string reason;
       for (const std::string& failure : split_failures[c]) reason += (reason.empty() ? "" : "; ") + failure;

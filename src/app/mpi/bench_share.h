@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <map>
@@ -60,18 +61,23 @@ std::vector<BenchPiece> bench_pieces(const std::vector<BenchCellPlan>& plans, st
 std::string part_id(const bench::Cell& cell, int first_frame, int last_frame);
 
 struct SharedBenchRun {
-  std::vector<std::optional<bench::CellOutcome>> outcomes;  // per plan: what became of a cell to run
-  nlohmann::json distribution;                              // summary.json's "distribution"
+  // Per plan: what became of a cell to run; nullopt for one the time limit left (not started, or a
+  // split cell with ranges not started: its finished ranges stay in cells/parts/).
+  std::vector<std::optional<bench::CellOutcome>> outcomes;
+  nlohmann::json distribution;  // summary.json's "distribution"
+  bool time_limit_reached = false;
 };
 
 // Runs the plans' cells to run over the ranks (every rank calls it, after rank 0 prepared --out).
 // Rank 0 gets every cell's outcome, its split cells joined; the other ranks get nullopt. `about`:
-// what this rank says of itself (rank_devices.h), with its GL renderer.
+// what this rank says of itself (rank_devices.h), with its GL renderer. No piece starts after
+// `hand_out_until` (--time-limit).
 std::optional<SharedBenchRun> run_bench_shared(const std::vector<BenchCellPlan>& plans,
                                                const std::map<std::string, Scene>& scenes,
                                                const bench::CellRunSettings& settings, const HeadlessGlContext& context,
                                                const std::filesystem::path& out, ProgressBar& progress,
-                                               const nlohmann::json& about);
+                                               const nlohmann::json& about,
+                                               std::optional<std::chrono::steady_clock::time_point> hand_out_until);
 
 // report.md's section on the ranks (empty when summary.json has no "distribution": one process).
 std::string distribution_markdown(const nlohmann::json& summary);

@@ -22,6 +22,7 @@ bool PieceScheduler::anyone_can_take(std::size_t index) const {
 }
 
 PieceScheduler::Next PieceScheduler::next(int rank) {
+  if (closed_) return {Answer::stop, 0};
   for (std::size_t index = 0; index < pieces_.size(); ++index) {
     if (!can_take(rank, index)) continue;
     pieces_[index].state = State::running;

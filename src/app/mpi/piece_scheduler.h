@@ -6,7 +6,9 @@
 // finishes asks for the next, so fast ranks take more (dynamic balance). A failed piece goes back to
 // the queue for a rank that has not tried it, until it has been tried `max_attempts` times or no
 // such rank is left; then it is failed with every attempt's error. A rank that failed as a whole
-// (retired: its device is gone, or a test made it fail) gets no more pieces.
+// (retired: its device is gone, or a test made it fail) gets no more pieces. Once closed (a time
+// limit passed) it hands out nothing more: the pieces in flight finish, the queued ones stay queued,
+// left for the next run of the same command.
 #include <cstddef>
 #include <optional>
 #include <set>
@@ -32,6 +34,9 @@ public:
   // `retire_rank`: the rank failed as a whole and takes no more pieces.
   void failed(int rank, std::size_t piece, const std::string& error, bool retire_rank);
   void retire(int rank, const std::string& reason);
+  // Hands out no more pieces (every rank that asks is told to stop); the queued ones stay queued.
+  void close() { closed_ = true; }
+  bool closed() const { return closed_; }
 
   enum class State { queued, running, done, failed };
   struct Attempt {
@@ -46,7 +51,7 @@ public:
   std::size_t piece_count() const { return pieces_.size(); }
   // Why the rank retired, or nullopt while it takes pieces.
   const std::optional<std::string>& retired(int rank) const { return retired_.at(static_cast<std::size_t>(rank)); }
-  bool all_resolved() const;
+  bool all_resolved() const;  // every piece done or failed (none queued or in flight)
 
 private:
   bool can_take(int rank, std::size_t piece) const;
@@ -57,6 +62,7 @@ private:
   std::vector<Piece> pieces_;
   std::vector<std::optional<std::string>> retired_;
   int max_attempts_;
+  bool closed_ = false;
 };
 
 }  // namespace glint::mpi

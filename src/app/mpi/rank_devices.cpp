@@ -57,7 +57,7 @@ RankSession::RankSession() : exceptions_(std::uncaught_exceptions()) {
 }
 
 RankSession::~RankSession() {
-  if (std::uncaught_exceptions() > exceptions_) mark_command_failed();
+  if (!shared_work_over_ && std::uncaught_exceptions() > exceptions_) mark_command_failed();
 }
 
 nlohmann::json use_rank_devices() {

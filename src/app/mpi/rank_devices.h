@@ -27,7 +27,10 @@ RankDevices choose_rank_devices(int local_rank, const std::vector<EglDeviceDescr
 
 // A command's stay on its rank (render and bench make one first thing): it chooses the rank's devices
 // (use_rank_devices) and, when the command leaves by an exception, marks it failed so that the exit
-// ends every rank (mpi_world.h) instead of leaving the others waiting for this one.
+// ends every rank (mpi_world.h) instead of leaving the others waiting for this one. Once the shared
+// work is over on every rank (`shared_work_over`: rank 0 after share_pieces returned), nobody waits
+// for this rank any more: an exception then (a time limit, an interruption, an unwritable report)
+// leaves by the usual MPI_Finalize with the command's own exit code.
 class RankSession {
 public:
   RankSession();
@@ -35,10 +38,12 @@ public:
   RankSession(const RankSession&) = delete;
   RankSession& operator=(const RankSession&) = delete;
   const nlohmann::json& about() const { return about_; }  // use_rank_devices()'s answer
+  void shared_work_over() { shared_work_over_ = true; }
 
 private:
   nlohmann::json about_;
   int exceptions_ = 0;
+  bool shared_work_over_ = false;
 };
 
 // On a rank of a run with several ranks: chooses this rank's devices, exports GLINT_EGL_DEVICE for

@@ -86,6 +86,12 @@ struct Book {
     for (int r = 0; r < ranks; ++r) result.ranks[static_cast<std::size_t>(r)].rank = r;
   }
 
+  // Under the lock: what `rank` does next, the scheduler closed first if the time limit passed.
+  PieceScheduler::Next next(int rank, const WorkShareOptions& options) {
+    if (options.hand_out_until && std::chrono::steady_clock::now() >= *options.hand_out_until) scheduler.close();
+    return scheduler.next(rank);
+  }
+
   // Under the lock.
   void record(int rank, const Outcome& outcome) {
     RankReport& report = result.ranks.at(static_cast<std::size_t>(rank));
@@ -110,7 +116,8 @@ struct Book {
 };
 
 // Rank 0's second thread: answers the other ranks until each was told to stop or retired.
-void serve_other_ranks(Book& book, const std::function<void(std::size_t)>& on_remote_piece_done) {
+void serve_other_ranks(Book& book, const WorkShareOptions& options,
+                       const std::function<void(std::size_t)>& on_remote_piece_done) {
   const int size = world().size;
   std::set<int> waiting;  // ranks that asked and got no answer yet
   int active = size - 1;
@@ -148,7 +155,7 @@ void serve_other_ranks(Book& book, const std::function<void(std::size_t)>& on_re
       PieceScheduler::Next next;
       {
         std::lock_guard lock(book.mutex);
-        next = book.scheduler.next(*it);
+        next = book.next(*it, options);
       }
       if (next.answer == PieceScheduler::Answer::wait) {
         ++it;
@@ -180,7 +187,7 @@ ShareResult lead(std::size_t pieces, const std::function<nlohmann::json(std::siz
   std::string serving_error;
   std::thread server([&] {
     try {
-      serve_other_ranks(book, on_remote_piece_done);
+      serve_other_ranks(book, options, on_remote_piece_done);
     } catch (const std::exception& error) {
       serving_error = error.what();
       serving_failed = true;
@@ -192,7 +199,7 @@ ShareResult lead(std::size_t pieces, const std::function<nlohmann::json(std::siz
     PieceScheduler::Next next;
     {
       std::unique_lock lock(book.mutex);
-      next = book.scheduler.next(0);
+      next = book.next(0, options);
       if (next.answer == PieceScheduler::Answer::wait) {
         book.changed.wait_for(lock, std::chrono::milliseconds(50));
         continue;
@@ -238,6 +245,12 @@ void follow(const std::function<nlohmann::json(std::size_t)>& run, const nlohman
 std::size_t ShareResult::failed_pieces() const {
   return static_cast<std::size_t>(std::count_if(pieces.begin(), pieces.end(), [](const PieceScheduler::Piece& p) {
     return p.state == PieceScheduler::State::failed;
+  }));
+}
+
+std::size_t ShareResult::queued_pieces() const {
+  return static_cast<std::size_t>(std::count_if(pieces.begin(), pieces.end(), [](const PieceScheduler::Piece& p) {
+    return p.state == PieceScheduler::State::queued;
   }));
 }
 

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -31,6 +32,9 @@ public:
 struct WorkShareOptions {
   bool errors_retire_rank = false;  // render: a failed frame leaves its loop in no state to go on
   int max_attempts = 2;
+  // No piece starts after this (bench --time-limit): the pieces in flight finish, the others stay
+  // queued in the result, for the next run of the same command.
+  std::optional<std::chrono::steady_clock::time_point> hand_out_until;
 };
 
 struct RankReport {
@@ -45,6 +49,7 @@ struct ShareResult {
   std::vector<nlohmann::json> results;        // per piece, what the run that finished it returned
   std::vector<RankReport> ranks;
   std::size_t failed_pieces() const;
+  std::size_t queued_pieces() const;  // left unstarted at the time limit
 };
 
 // Runs piece i as run(i) on whichever rank takes it; returns the outcome on rank 0 and nullopt on the
