@@ -3,6 +3,7 @@
 // after deformation with every policy, and through the device path with the ray count read on the
 // GPU. Needs a CUDA GPU; skipped elsewhere.
 #include "cuda/cuda_ray_tracer.h"
+#include "cuda/device_copies.h"
 #include "cuda/device_query.h"
 #include "backends/registry.h"
 #include "rt/ray_tracer.h"
@@ -115,20 +116,8 @@ TEST(CudaRayTracerOcclusion, MisuseIsAClearError) {
 }
 
 #if GLINT_HAVE_CUDA
-template <typename T>
-T* device_copy(const std::vector<T>& host) {
-  T* device = nullptr;
-  EXPECT_EQ(cudaMalloc(reinterpret_cast<void**>(&device), host.size() * sizeof(T)), cudaSuccess);
-  EXPECT_EQ(cudaMemcpy(device, host.data(), host.size() * sizeof(T), cudaMemcpyHostToDevice), cudaSuccess);
-  return device;
-}
-
-template <typename T>
-std::vector<T> host_copy(const T* device, size_t count) {
-  std::vector<T> host(count);
-  EXPECT_EQ(cudaMemcpy(host.data(), device, count * sizeof(T), cudaMemcpyDeviceToHost), cudaSuccess);
-  return host;
-}
+using testing::device_copy;
+using testing::host_copy;
 
 // The renderer's shadow path: rays and one uint32 per ray in device memory, the ray count read on the
 // GPU; only that many slots are written (the rest keep their sentinel), with both trace kernels, and

@@ -4,6 +4,7 @@
 // device memory, vertices rewritten on the GPU). Needs a CUDA GPU; skipped elsewhere, except the
 // error cases that need none.
 #include "cuda/cuda_ray_tracer.h"
+#include "cuda/device_copies.h"
 #include "cuda/device_query.h"
 #include "backends/registry.h"
 #include "rt/ray_tracer.h"
@@ -185,20 +186,8 @@ TEST(CudaRayTracer, MisuseIsAClearError) {
 }
 
 #if GLINT_HAVE_CUDA
-template <typename T>
-T* device_copy(const std::vector<T>& host) {
-  T* device = nullptr;
-  EXPECT_EQ(cudaMalloc(reinterpret_cast<void**>(&device), host.size() * sizeof(T)), cudaSuccess);
-  EXPECT_EQ(cudaMemcpy(device, host.data(), host.size() * sizeof(T), cudaMemcpyHostToDevice), cudaSuccess);
-  return device;
-}
-
-template <typename T>
-std::vector<T> host_copy(const T* device, size_t count) {
-  std::vector<T> host(count);
-  EXPECT_EQ(cudaMemcpy(host.data(), device, count * sizeof(T), cudaMemcpyDeviceToHost), cudaSuccess);
-  return host;
-}
+using testing::device_copy;
+using testing::host_copy;
 
 // What the hybrid renderer does: the ray count lives in device memory and only that many of the
 // `capacity` slots are traced; the rest of the hit buffer is left alone.

@@ -2,6 +2,7 @@
 #include "gl/gpu_timer.h"
 #include "gl/shader_program.h"
 #include "gl_test_context.h"
+#include "timed_workload.h"
 
 #include <gtest/gtest.h>
 
@@ -15,37 +16,12 @@ namespace {
 
 using GlGpuTimer = testing::GlTest;
 
-constexpr PassTimingMethod kMethods[] = {PassTimingMethod::gpu_queries, PassTimingMethod::finish_wall_clock};
-
-// Something worth timing: a full-screen triangle into a 256x256 target.
-class Workload {
-public:
-  Workload()
-      : colour_(create_texture_2d(GL_RGBA8, 256, 256)),
-        framebuffer_(create_framebuffer()),
-        vertex_array_(create_vertex_array()),
-        program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "solid_color.frag.glsl"})) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, colour_.id(), 0);
-    program_.set_uniform("color", vec4(0.5f));
-  }
-  void draw() {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-    glViewport(0, 0, 256, 256);
-    program_.use();
-    glBindVertexArray(vertex_array_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-
-private:
-  GlTexture colour_;
-  GlFramebuffer framebuffer_;
-  GlVertexArray vertex_array_;
-  ShaderProgram program_;
-};
+using testing::FullScreenWorkload;
+using testing::kTimingMethods;
 
 TEST_F(GlGpuTimer, GivesAFiniteNonNegativeTimePerNamedPassAfterADraw) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
   SCOPED_TRACE(std::string(pass_timing_name(method)));
   GpuTimer timer(method);
   timer.begin_frame();
@@ -76,8 +52,8 @@ TEST_F(GlGpuTimer, GivesAFiniteNonNegativeTimePerNamedPassAfterADraw) {
 }
 
 TEST_F(GlGpuTimer, EveryFrameComesOutOnceAndInOrder) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
   SCOPED_TRACE(std::string(pass_timing_name(method)));
   GpuTimer timer(method);
   std::vector<FrameTimes> frames;
@@ -105,7 +81,7 @@ TEST_F(GlGpuTimer, EveryFrameComesOutOnceAndInOrder) {
 }
 
 TEST_F(GlGpuTimer, MisuseIsAnErrorNotAGlError) {
-  for (const PassTimingMethod method : kMethods) {
+  for (const PassTimingMethod method : kTimingMethods) {
   SCOPED_TRACE(std::string(pass_timing_name(method)));
   GpuTimer timer(method);
   EXPECT_THROW(timer.begin_pass("outside a frame"), Error);
@@ -125,7 +101,7 @@ TEST_F(GlGpuTimer, MisuseIsAnErrorNotAGlError) {
 // Wall-clock timing covers everything between the pass's start and end, so a pass that waits 30 ms
 // on the CPU measures at least that (a bound on what was done, not a performance claim).
 TEST_F(GlGpuTimer, WallClockPassesIncludeTheirWholeDuration) {
-  Workload workload;
+  FullScreenWorkload workload;
   GpuTimer timer(PassTimingMethod::finish_wall_clock);
   timer.begin_frame();
   {

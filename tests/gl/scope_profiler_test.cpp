@@ -6,6 +6,7 @@
 #include "gl/scope_profiler.h"
 #include "gl/shader_program.h"
 #include "gl_test_context.h"
+#include "timed_workload.h"
 
 #include <gtest/gtest.h>
 
@@ -18,36 +19,11 @@ namespace {
 
 using ScopeProfilerTest = testing::GlTest;
 
-constexpr PassTimingMethod kMethods[] = {PassTimingMethod::gpu_queries, PassTimingMethod::finish_wall_clock};
-
-// A full-screen triangle into a 256x256 target: something for a scope to time.
-class Workload {
-public:
-  Workload()
-      : colour_(create_texture_2d(GL_RGBA8, 256, 256)),
-        framebuffer_(create_framebuffer()),
-        vertex_array_(create_vertex_array()),
-        program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "solid_color.frag.glsl"})) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, colour_.id(), 0);
-    program_.set_uniform("color", vec4(0.5f));
-  }
-  void draw() {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer_.id());
-    glViewport(0, 0, 256, 256);
-    program_.use();
-    glBindVertexArray(vertex_array_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-  }
-
-private:
-  GlTexture colour_;
-  GlFramebuffer framebuffer_;
-  GlVertexArray vertex_array_;
-  ShaderProgram program_;
-};
+using testing::FullScreenWorkload;
+using testing::kTimingMethods;
 
 // outer { draw; inner { draw; deepest { draw } }; second { draw } }
-void nested_scopes(Workload& workload) {
+void nested_scopes(FullScreenWorkload& workload) {
   GlPassScope outer("outer");
   workload.draw();
   {
@@ -67,8 +43,8 @@ std::vector<std::string> paths_of(const FrameScopes& frame) {
 }
 
 TEST_F(ScopeProfilerTest, NestedGlPassScopesGetPathsDepthsParentsAndTimes) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
     SCOPED_TRACE(std::string(pass_timing_name(method)));
     ScopeProfiler profiler(method);
     profiler.begin_frame();
@@ -98,8 +74,8 @@ TEST_F(ScopeProfilerTest, NestedGlPassScopesGetPathsDepthsParentsAndTimes) {
 }
 
 TEST_F(ScopeProfilerTest, ScopesRecordNothingWithoutAnOpenFrame) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
     SCOPED_TRACE(std::string(pass_timing_name(method)));
     EXPECT_EQ(ScopeProfiler::active(), nullptr);
     nested_scopes(workload);  // no profiler at all: nothing to record into, nothing fails
@@ -120,8 +96,8 @@ TEST_F(ScopeProfilerTest, ScopesRecordNothingWithoutAnOpenFrame) {
 }
 
 TEST_F(ScopeProfilerTest, GpuTimerPassesAreTheOutermostScopes) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
     SCOPED_TRACE(std::string(pass_timing_name(method)));
     GpuTimer timer(method);
     ScopeProfiler profiler(method);
@@ -147,8 +123,8 @@ TEST_F(ScopeProfilerTest, GpuTimerPassesAreTheOutermostScopes) {
 }
 
 TEST_F(ScopeProfilerTest, EveryFrameComesBackOnceAlsoWhenTheRingWrapped) {
-  Workload workload;
-  for (const PassTimingMethod method : kMethods) {
+  FullScreenWorkload workload;
+  for (const PassTimingMethod method : kTimingMethods) {
     SCOPED_TRACE(std::string(pass_timing_name(method)));
     ScopeProfiler profiler(method);
     // Two frames more than the ring holds, none taken meanwhile: begin_frame reads the oldest sets.
