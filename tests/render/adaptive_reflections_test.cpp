@@ -34,34 +34,6 @@ FramePipelineSettings unfiltered(ReflectionMode mode) {
   return settings;
 }
 
-// A strip of mirror floor before a wide lit wall that fills the view: SSR finds every reflection.
-Scene mirror_strip_before_wall() {
-  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 2.0f));
-  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
-  const std::uint32_t wall = testing::add_material(scene, vec3(0.8f, 0.6f, 0.3f));
-  testing::add_quad(scene, vec3(-0.5f, 0.0f, 4.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -6.0f), floor);
-  testing::add_quad(scene, vec3(-50.0f, -1.0f, -4.0f), vec3(100.0f, 0.0f, 0.0f), vec3(0.0f, 50.0f, 0.0f), wall);
-  return scene;
-}
-
-// A mirror floor under an emissive ceiling behind the camera's image plane, the camera looking
-// steeply down: every reflected ray leaves the screen, so SSR fails on every reflective pixel.
-Scene mirror_floor_under_ceiling() {
-  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 0.0f));
-  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
-  const std::uint32_t ceiling = testing::add_material(scene, vec3(0.0f));
-  scene.materials[ceiling].emissive = vec3(4.0f, 0.0f, 0.0f);
-  testing::add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
-  testing::add_quad(scene, vec3(-6.0f, 4.0f, 8.0f), vec3(0.0f, 0.0f, -6.0f), vec3(12.0f, 0.0f, 0.0f), ceiling);
-  return scene;
-}
-
-FrameState camera_looking_steeply_down() {
-  const vec3 eye(0.0f, 1.5f, 6.0f);
-  return testing::look_at(eye, eye + vec3(0.0f, -std::sin(glm::radians(60.0f)), -std::cos(glm::radians(60.0f))),
-                          vec3(0.0f, 3.0f, 0.0f));
-}
-
 // A strip of mirror floor with a lit wall behind its left half only: SSR finds the wall's reflection
 // on the left and fails on the right, where the mirrored rays leave the screen over nothing.
 Scene mirror_floor_half_walled() {
@@ -112,7 +84,7 @@ ImageRgba8 render_once(const Scene& scene, ReflectionMode mode, const FrameState
 }
 
 TEST_F(AdaptiveReflectionsTest, WithoutSsrFailuresAutoEqualsSsr) {
-  const Scene scene = mirror_strip_before_wall();
+  const Scene scene = testing::mirror_strip_before_wall();
   const FrameState frame = camera_over_the_strip();
   FramePipeline ssr(scene, kWidth, kHeight, unfiltered(ReflectionMode::ssr));
   ssr.render(frame);
@@ -143,7 +115,7 @@ TEST_F(AdaptiveReflectionsTest, WithoutSsrFailuresAutoEqualsSsr) {
 }
 
 TEST_F(AdaptiveReflectionsTest, AWholeFrameOfSsrEndsWhereSsrStartsFailing) {
-  const Scene scene = mirror_strip_before_wall();
+  const Scene scene = testing::mirror_strip_before_wall();
   AutoFrames automatic(scene, unfiltered(ReflectionMode::adaptive), camera_over_the_strip(), 3);
   ASSERT_EQ(automatic.last.path, ReflectionPath::all_ssr);
   // The camera looks 45 degrees down onto the strip: the mirrored rays leave the screen above it.
@@ -202,13 +174,13 @@ TEST_F(AdaptiveReflectionsTest, WhereSsrIsCheaperAndFailsOnPartOfTheFrameAutoDec
 TEST_F(AdaptiveReflectionsTest, AWholeFramePathIsRecheckedPerTile) {
   // SSR fails everywhere: all rays, but every recheck_frames frames a per-tile frame (which forgets
   // the stale history: SSR + rays on every tile) measures SSR again.
-  const Scene scene = mirror_floor_under_ceiling();
+  const Scene scene = testing::mirror_floor_under_ceiling();
   FramePipelineSettings settings = unfiltered(ReflectionMode::adaptive);
   settings.adaptive.recheck_frames = 3;
-  AutoFrames automatic(scene, settings, camera_looking_steeply_down(), 2);
+  AutoFrames automatic(scene, settings, testing::camera_looking_steeply_down(), 2);
   std::string paths;
   for (int i = 0; i < 8; ++i) {
-    const AutoFrame frame = automatic.render(camera_looking_steeply_down());
+    const AutoFrame frame = automatic.render(testing::camera_looking_steeply_down());
     paths += frame.readback.adaptive->path == ReflectionPath::all_rays ? "R" : "T";
     EXPECT_EQ(frame.ran("classify"), frame.readback.adaptive->path == ReflectionPath::per_tile) << "frame " << i;
   }
@@ -218,8 +190,8 @@ TEST_F(AdaptiveReflectionsTest, AWholeFramePathIsRecheckedPerTile) {
 }
 
 TEST_F(AdaptiveReflectionsTest, WhereSsrAlwaysFailsAutoTracesEveryPixelWithoutMarching) {
-  const Scene scene = mirror_floor_under_ceiling();
-  const FrameState frame = camera_looking_steeply_down();
+  const Scene scene = testing::mirror_floor_under_ceiling();
+  const FrameState frame = testing::camera_looking_steeply_down();
   FramePipeline hybrid(scene, kWidth, kHeight, unfiltered(ReflectionMode::hybrid));
   hybrid.render(frame);
   ASSERT_EQ(hybrid.read_counts()->failed, hybrid.read_counts()->reflective) << "SSR is meant to fail everywhere";
@@ -236,7 +208,7 @@ TEST_F(AdaptiveReflectionsTest, WhereSsrAlwaysFailsAutoTracesEveryPixelWithoutMa
 TEST_F(AdaptiveReflectionsTest, TheRayBudgetIsNeverExceeded) {
   // SSR fails on every reflective pixel here, so every frame wants thousands of rays; the camera
   // moves, still and fast, so the motion-scaled budget changes too.
-  const Scene scene = mirror_floor_under_ceiling();
+  const Scene scene = testing::mirror_floor_under_ceiling();
   FramePipelineSettings settings = unfiltered(ReflectionMode::adaptive);
   constexpr std::uint32_t kBudget = 300;
   settings.adaptive.budget.rays = kBudget;
@@ -244,7 +216,7 @@ TEST_F(AdaptiveReflectionsTest, TheRayBudgetIsNeverExceeded) {
   std::uint32_t most_wanted = 0;
   float lowest_factor = 1.0f;
   for (const float x : {0.0f, 0.0f, 0.01f, 0.5f, 1.0f, 1.0f, 1.0f}) {
-    FrameState frame = camera_looking_steeply_down();
+    FrameState frame = testing::camera_looking_steeply_down();
     frame.camera.position.x += x;
     frame.camera.target.x += x;
     pipeline.render(frame);
@@ -261,8 +233,8 @@ TEST_F(AdaptiveReflectionsTest, TheRayBudgetIsNeverExceeded) {
 }
 
 TEST_F(AdaptiveReflectionsTest, TheTileClassesViewShowsTheDecision) {
-  const Scene scene = mirror_floor_under_ceiling();
-  AutoFrames automatic(scene, unfiltered(ReflectionMode::adaptive), camera_looking_steeply_down(), 2);
+  const Scene scene = testing::mirror_floor_under_ceiling();
+  AutoFrames automatic(scene, unfiltered(ReflectionMode::adaptive), testing::camera_looking_steeply_down(), 2);
   bool found = false;
   for (const DebugView& view : automatic.pipeline.read_debug_views()) {
     if (view.name != "tile_classes") continue;

@@ -91,19 +91,8 @@ TEST_F(HybridPipelineTest, HybridKeepsEverySsrPixelExactly) {
   EXPECT_GT(traced_differ, 0) << "traced pixels receive a reflection SSR did not give them";
 }
 
-// A strip of mirror floor in the middle of the view, ending before a wide lit wall that fills the
-// view beyond it: every reflected ray meets the wall well inside the screen, so SSR finds them all.
-Scene mirror_strip_before_wall() {
-  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 2.0f));
-  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
-  const std::uint32_t wall = testing::add_material(scene, vec3(0.8f, 0.6f, 0.3f));
-  testing::add_quad(scene, vec3(-0.5f, 0.0f, 4.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -6.0f), floor);
-  testing::add_quad(scene, vec3(-50.0f, -1.0f, -4.0f), vec3(100.0f, 0.0f, 0.0f), vec3(0.0f, 50.0f, 0.0f), wall);
-  return scene;
-}
-
 TEST_F(HybridPipelineTest, WithoutSsrFailuresHybridEqualsSsr) {
-  const Scene scene = mirror_strip_before_wall();
+  const Scene scene = testing::mirror_strip_before_wall();
   const FrameState frame = testing::look_at(vec3(0.0f, 1.0f, 6.0f), vec3(0.0f, 1.0f, -4.0f), vec3(0.0f, 3.0f, 2.0f));
   const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), frame);
   const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), frame);
@@ -114,30 +103,9 @@ TEST_F(HybridPipelineTest, WithoutSsrFailuresHybridEqualsSsr) {
   EXPECT_EQ(ssr.image.pixels, hybrid.image.pixels);
 }
 
-// A mirror floor and an emissive red ceiling (y = 4, z from 2 to 8) over a camera at (0, 1.5, 6) that
-// looks 60 degrees down: the whole ceiling lies behind the camera's image plane, yet the floor under
-// the camera mirrors it. A floor mirror only sends rays away from the viewer, so "behind the camera"
-// here is behind its image plane, which is what screen space cannot see.
-Scene mirror_floor_under_ceiling() {
-  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 3.0f, 0.0f));
-  const std::uint32_t floor = testing::add_material(scene, vec3(0.1f), 1.0f);
-  const std::uint32_t ceiling = testing::add_material(scene, vec3(0.0f));
-  scene.materials[ceiling].emissive = vec3(4.0f, 0.0f, 0.0f);
-  testing::add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
-  // Edges -z then x: the normal cross(-z, x) = -y faces the floor.
-  testing::add_quad(scene, vec3(-6.0f, 4.0f, 8.0f), vec3(0.0f, 0.0f, -6.0f), vec3(12.0f, 0.0f, 0.0f), ceiling);
-  return scene;
-}
-
-FrameState camera_looking_steeply_down() {
-  const vec3 eye(0.0f, 1.5f, 6.0f);
-  return testing::look_at(eye, eye + vec3(0.0f, -std::sin(glm::radians(60.0f)), -std::cos(glm::radians(60.0f))),
-                          vec3(0.0f, 3.0f, 0.0f));
-}
-
 TEST_F(HybridPipelineTest, CeilingBehindTheCameraAppearsInHybridAndRtButNotSsr) {
-  const Scene scene = mirror_floor_under_ceiling();
-  const FrameState frame = camera_looking_steeply_down();
+  const Scene scene = testing::mirror_floor_under_ceiling();
+  const FrameState frame = testing::camera_looking_steeply_down();
   const RenderedFrame ssr = render_frame(scene, unfiltered(ReflectionMode::ssr), frame);
   const RenderedFrame hybrid = render_frame(scene, unfiltered(ReflectionMode::hybrid), frame);
   const RenderedFrame rt = render_frame(scene, unfiltered(ReflectionMode::rt), frame);

@@ -1,5 +1,7 @@
 #include "raster_test_scene.h"
 
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace glint::testing {
@@ -121,6 +123,32 @@ Scene mirror_floor_with_wall(float wall_z, vec2 wall_size) {
 
 FrameState camera_looking_down_the_floor() {
   return look_at(vec3(0.0f, 1.5f, 6.0f), vec3(0.0f, 0.8f, -4.0f), vec3(0.0f, 6.0f, 0.0f));
+}
+
+Scene mirror_strip_before_wall() {
+  Scene scene = make_empty_test_scene(vec3(0.0f, 3.0f, 2.0f));
+  const std::uint32_t floor = add_material(scene, vec3(0.1f), 1.0f);
+  const std::uint32_t wall = add_material(scene, vec3(0.8f, 0.6f, 0.3f));
+  add_quad(scene, vec3(-0.5f, 0.0f, 4.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -6.0f), floor);
+  add_quad(scene, vec3(-50.0f, -1.0f, -4.0f), vec3(100.0f, 0.0f, 0.0f), vec3(0.0f, 50.0f, 0.0f), wall);
+  return scene;
+}
+
+Scene mirror_floor_under_ceiling() {
+  Scene scene = make_empty_test_scene(vec3(0.0f, 3.0f, 0.0f));
+  const std::uint32_t floor = add_material(scene, vec3(0.1f), 1.0f);
+  const std::uint32_t ceiling = add_material(scene, vec3(0.0f));
+  scene.materials[ceiling].emissive = vec3(4.0f, 0.0f, 0.0f);
+  add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), floor);
+  // Edges -z then x: the normal cross(-z, x) = -y faces the floor.
+  add_quad(scene, vec3(-6.0f, 4.0f, 8.0f), vec3(0.0f, 0.0f, -6.0f), vec3(12.0f, 0.0f, 0.0f), ceiling);
+  return scene;
+}
+
+FrameState camera_looking_steeply_down() {
+  const vec3 eye(0.0f, 1.5f, 6.0f);
+  return look_at(eye, eye + vec3(0.0f, -std::sin(glm::radians(60.0f)), -std::cos(glm::radians(60.0f))),
+                 vec3(0.0f, 3.0f, 0.0f));
 }
 
 }  // namespace glint::testing

@@ -38,6 +38,18 @@ std::optional<vec3> hit_quad(vec3 origin, vec3 direction, vec3 quad_origin, vec3
 Scene mirror_floor_with_wall(float wall_z, vec2 wall_size = vec2(6.0f, 2.0f));
 FrameState camera_looking_down_the_floor();
 
+// A strip of mirror floor (1 wide) in the middle of the view, ending before a wide lit wall that
+// fills the view beyond it (light at (0, 3, 2)): seen from (0, 1, 6) looking towards -z, every
+// reflected ray meets the wall well inside the screen, so SSR finds them all.
+Scene mirror_strip_before_wall();
+
+// A mirror floor and an emissive red ceiling (y = 4, z from 2 to 8) over the camera of
+// camera_looking_steeply_down(), at (0, 1.5, 6) looking 60 degrees down: the whole ceiling lies
+// behind the camera's image plane, yet the floor under the camera mirrors it, so SSR fails on every
+// reflective pixel and only rays find the ceiling.
+Scene mirror_floor_under_ceiling();
+FrameState camera_looking_steeply_down();
+
 struct QuadGeometry {
   vec3 origin, edge_u, edge_v;
 };
