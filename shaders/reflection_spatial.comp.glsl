@@ -28,6 +28,7 @@ layout(binding = 1) uniform usampler2D guide;
 layout(binding = 2) uniform sampler2D world_normal_roughness;
 layout(binding = 0, rgba16f) uniform writeonly image2D filtered;
 
+uniform GuideRays rays;  // this frame's (the guide's positions)
 uniform int step;
 uniform int last_iteration;  // 1 in the denoiser's last iteration, whose output is every pixel's
 uniform float max_sigma;
@@ -42,7 +43,7 @@ void main() {
   const ivec2 size = textureSize(source, 0);
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
-  const uvec4 own = texelFetch(guide, pixel, 0);
+  const uvec2 own = texelFetch(guide, pixel, 0).xy;
   if (!guide_reflective(own)) {
     // No tap reads a non-reflective pixel: only the last iteration stores its output, 0.
     if (last_iteration != 0) imageStore(filtered, pixel, vec4(0.0));
@@ -56,7 +57,7 @@ void main() {
     imageStore(filtered, pixel, centre);
     return;
   }
-  const vec3 position = guide_position(own);
+  const vec3 position = guide_position(rays, pixel, own);
   const vec3 normal = normalize(normal_roughness.xyz);
   const float roughness_key = guide_roughness(own);  // quantised like the taps': equal for one material
   const float reach = 9.0 * sigma * sigma;          // (3 s)^2
@@ -72,9 +73,9 @@ void main() {
       if (d2 >= reach) continue;
       const ivec2 q = pixel + offset;
       if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
-      const uvec4 tap = texelFetch(guide, q, 0);
+      const uvec2 tap = texelFetch(guide, q, 0).xy;
       if (!guide_reflective(tap)) continue;
-      const float plane = abs(dot(normal, guide_position(tap) - position)) * plane_scale;
+      const float plane = abs(dot(normal, guide_position(rays, q, tap) - position)) * plane_scale;
       // The Gaussian, plane, normal and roughness factors in one exp2: exp(a) exp(b) exp(c) x^p =
       // 2^(log2(e) (a + b + c) + p log2(x)); a normal facing away (x <= 0) gives 2^(p log2(1e-30)),
       // 0 for p >= 1 as max(x, 0)^p.

@@ -32,10 +32,12 @@ layout(binding = 4) uniform sampler2D history;
 layout(binding = 5) uniform usampler2D previous_guide;
 layout(binding = 6) uniform sampler2D world_motion;  // with has_motion: previous - current world position
 layout(binding = 0, rgba16f) uniform writeonly image2D accumulated;
-layout(binding = 1, rgba32ui) uniform writeonly uimage2D guide;
+layout(binding = 1, rg32ui) uniform writeonly uimage2D guide;
 layout(binding = 24, std430) writeonly buffer Motion { vec2 motion[]; };
 
 uniform mat4 previous_view_projection;
+uniform GuideRays rays;           // this frame's (the guide written)
+uniform GuideRays previous_rays;  // the previous frame's (previous_guide)
 uniform int has_history;
 uniform int has_motion;
 uniform int record_motion;
@@ -92,7 +94,7 @@ void main() {
   const vec4 normal_roughness = texelFetch(world_normal_roughness, pixel, 0);
   const vec3 normal = normalize(normal_roughness.xyz);
   const float roughness = glossy_roughness(normal_roughness.w);
-  imageStore(guide, pixel, pack_guide(position.xyz, normal, roughness));
+  imageStore(guide, pixel, uvec4(pack_guide(rays, pixel, position.xyz, normal, roughness), 0u, 0u));
   if (roughness <= 0.0 || has_history == 0) {  // a mirror, or the first frame: c passes through
     imageStore(accumulated, pixel, vec4(c, 1.0));
     store_motion(index, vec2(-1.0));
@@ -114,7 +116,8 @@ void main() {
       for (int i = 0; i < 2; ++i) {
         const ivec2 tap = corner + ivec2(i, j);
         if (any(lessThan(tap, ivec2(0))) || any(greaterThanEqual(tap, size))) continue;
-        if (!same_surface(previous_world, normal, camera_distance, texelFetch(previous_guide, tap, 0), depth_tolerance))
+        if (!same_surface(previous_world, normal, camera_distance, previous_rays, tap, texelFetch(previous_guide, tap, 0).xy,
+                          depth_tolerance))
           continue;
         const float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         sum += w * texelFetch(history, tap, 0);

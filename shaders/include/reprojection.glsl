@@ -9,11 +9,12 @@ vec2 previous_pixel_position(mat4 previous_view_projection, vec3 world, vec2 siz
   return (clip.xy / clip.w * 0.5 + 0.5) * size;
 }
 
-// Whether a previous-frame surface sample (include/denoiser_guide.glsl's guide: position, normal,
-// reflective) is the same surface as the current one: reflective, on its plane within
-// depth_tolerance x the distance to the camera, and facing the same way.
-bool same_surface(vec3 position, vec3 normal, float camera_distance, uvec4 previous_guide, float depth_tolerance) {
+// Whether a previous-frame surface sample (include/denoiser_guide.glsl's guide of pixel `tap` of
+// the previous frame, whose rays are `rays`) is the same surface as the current one: reflective, on
+// its plane within depth_tolerance x the distance to the camera, and facing the same way.
+bool same_surface(vec3 position, vec3 normal, float camera_distance, GuideRays rays, ivec2 tap, uvec2 previous_guide,
+                  float depth_tolerance) {
   if (!guide_reflective(previous_guide)) return false;
-  return abs(dot(normal, guide_position(previous_guide) - position)) <= depth_tolerance * camera_distance &&
+  return abs(dot(normal, guide_position(rays, tap, previous_guide) - position)) <= depth_tolerance * camera_distance &&
          dot(normal, guide_normal(previous_guide)) > 0.9;
 }

@@ -10,15 +10,44 @@
 #include "render/surface_motion.h"
 
 #include <cstddef>
+#include <string>
 
 namespace glint::render {
 namespace {
 
 constexpr GLenum kHistoryFormat = GL_RGBA16F;
-constexpr GLenum kGuideFormat = GL_RGBA32UI;  // include/denoiser_guide.glsl
+constexpr GLenum kGuideFormat = GL_RG32UI;  // include/denoiser_guide.glsl
 constexpr GLuint kMotionBinding = 24;  // storage binding of the motion buffer (reflection_temporal.comp.glsl)
 // Between the passes of one run: the next pass fetches (texelFetch) what the last one stored.
 constexpr GLbitfield kBetweenPasses = GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT;
+
+// The guide's camera rays (include/denoiser_guide.glsl's GuideRays) of view-projection `vp` over a
+// width x height image: the projection centre and the affine map of pixel centres to the directions
+// towards the far plane, from the inverse in double precision. A perspective view-projection maps
+// the eye to (0, 0, z, 0), and the far plane's points have one w, so the map is exact.
+struct GuideRays {
+  vec3 origin, corner, step_x, step_y;
+};
+
+GuideRays guide_rays(const mat4& vp, int width, int height) {
+  const glm::dmat4 inverse = glm::inverse(glm::dmat4(vp));
+  const glm::dvec4 eye = inverse * glm::dvec4(0.0, 0.0, 1.0, 0.0);
+  const glm::dvec3 origin = glm::dvec3(eye) / eye.w;
+  const auto direction = [&](double x, double y) {
+    const glm::dvec4 far_point = inverse * glm::dvec4(x, y, 1.0, 1.0);
+    return glm::dvec3(far_point) / far_point.w - origin;
+  };
+  const glm::dvec3 corner = direction(-1.0, -1.0);
+  return {vec3(origin), vec3(corner), vec3((direction(1.0, -1.0) - corner) / static_cast<double>(width)),
+          vec3((direction(-1.0, 1.0) - corner) / static_cast<double>(height))};
+}
+
+void set_rays(ShaderProgram& program, const std::string& name, const GuideRays& rays) {
+  program.set_uniform(name + ".origin", rays.origin);
+  program.set_uniform(name + ".corner", rays.corner);
+  program.set_uniform(name + ".step_x", rays.step_x);
+  program.set_uniform(name + ".step_y", rays.step_y);
+}
 
 }  // namespace
 
@@ -65,6 +94,9 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   // Temporal: history_[current_ ^ 1] (last frame's) -> history_[current_]; this frame's guide into
   // guide_[current_], last frame's read from guide_[current_ ^ 1].
   temporal_.set_uniform("previous_view_projection", previous_view_projection_);
+  const GuideRays rays = guide_rays(inputs.view_projection, w, h);
+  set_rays(temporal_, "rays", rays);
+  set_rays(temporal_, "previous_rays", guide_rays(previous_view_projection_, w, h));
   temporal_.set_uniform("has_history", has_history_ ? 1 : 0);
   temporal_.set_uniform("has_motion", inputs.world_motion != 0 ? 1 : 0);
   temporal_.set_uniform("record_motion", motion_.id() != 0 ? 1 : 0);
@@ -93,6 +125,7 @@ void ReflectionDenoiser::run(const DenoiserInputs& inputs, const ResolveSettings
   spatial_.set_uniform("depth_sigma", d.depth_sigma);
   spatial_.set_uniform("normal_power", d.normal_power);
   spatial_.set_uniform("roughness_sigma", d.roughness_sigma);
+  set_rays(spatial_, "rays", rays);
   glBindTextureUnit(1, guide_[current_].id());
   glBindTextureUnit(2, inputs.world_normal_roughness);
   GLuint source = history_[current_].id();

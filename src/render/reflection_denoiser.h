@@ -69,7 +69,7 @@ private:
   int width_, height_;
   GlTexture history_[2];  // RGBA16F ping-pong: rgb, a = history length
   GlTexture filtered_[2];
-  GlTexture guide_[2];  // RGBA32UI ping-pong: this frame's guide, the previous frame's
+  GlTexture guide_[2];  // RG32UI ping-pong: this frame's guide, the previous frame's
   GlBuffer motion_;     // with record_motion(true)
   int current_ = 0;
   int last_output_ = 0;
