@@ -26,7 +26,7 @@ void main() {
     imageStore(pyramid_base, pixel, vec4(kBackgroundDepth, kBackgroundDepth, 0.0, 0.0));
     return;
   }
-  const vec3 p = (view * vec4(position.xyz, 1.0)).xyz;
+  const vec3 p = view_from_world(position.xyz);
   const vec3 n = mat3(view) * imageLoad(world_normal, pixel).xyz;
   float lo = -p.z, hi = -p.z;
   for (int corner = 0; corner < 4; ++corner) {

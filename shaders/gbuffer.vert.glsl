@@ -34,5 +34,5 @@ void main() {
   world_motion = write_motion != 0 && mesh_moves[instance.mesh] != 0u
                      ? vertex_world_motion(instance.model, uint(gl_VertexID), position_u.xyz)
                      : vec3(0.0);
-  gl_Position = view_projection * world;
+  gl_Position = clip_from_world(world.xyz);  // camera-relative (include/frame_constants.glsl)
 }

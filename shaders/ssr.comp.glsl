@@ -93,7 +93,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
 
   // View space, clipped to the near plane (what lies behind the camera is not on screen: such rays
   // fail by running out of line) and to the far plane.
-  const vec3 origin_vs = (view * vec4(origin_ws, 1.0)).xyz;
+  const vec3 origin_vs = view_from_world(origin_ws);  // camera-relative: exact far from the origin
   const vec3 ray_vs = mat3(view) * ray_ws;
   float ray_length = near_far.y;
   if (ray_vs.z > 0.0) ray_length = min(ray_length, (-near_far.x - origin_vs.z) / ray_vs.z);
@@ -159,7 +159,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
     // the ray enters and leaves the pixel (a range test alone would take a ray skimming over a
     // receding surface for a hit).
     const vec4 cell_position = imageLoad(world_position, at);
-    const vec3 plane_p = (view * vec4(cell_position.xyz, 1.0)).xyz;
+    const vec3 plane_p = view_from_world(cell_position.xyz);
     const vec3 plane_n = mat3(view) * imageLoad(world_normal, at).xyz;
     const float behind_a = za - pixel_plane_depth(plane_p, plane_n, line.p0 + line.dp * t, vec2(screen_size));
     const float behind_b = zb - pixel_plane_depth(plane_p, plane_n, line.p0 + line.dp * t_exit, vec2(screen_size));
@@ -186,7 +186,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   const vec3 hit_normal = normalize(imageLoad(world_normal, hit_pixel).xyz);
   const float facing = -dot(hit_normal, ray_ws);
   if (facing <= 0.0) return kFailed;  // back face (the G-buffer normal is never flipped)
-  const float hit_depth = -(view * vec4(hit_position.xyz, 1.0)).z;
+  const float hit_depth = -view_from_world(hit_position.xyz).z;
   const float footprint = hit_depth * 2.0 / (projection[1][1] * float(screen_size.y));
   const float off_plane = neighbour_plane_distance(hit_pixel, hit_position.xyz, hit_normal) / footprint;
   const vec2 hit_center = vec2(hit_pixel) + 0.5;

@@ -18,5 +18,5 @@ invariant gl_Position;
 void main() {
   const vec4 world = instances[instance_index].model * vec4(position_u.xyz, 1.0);
   instance = instance_index;
-  gl_Position = view_projection * world;
+  gl_Position = clip_from_world(world.xyz);
 }

@@ -33,7 +33,7 @@ void fetch_triangle(uint triangle, out vec4 corner[3]) {
   for (uint k = 0u; k < 3u; ++k) {
     const uint index = indices[range.first_index + 3u * in_mesh + k];
     const vec4 world = model * vec4(vertices[range.base_vertex + index].position_u.xyz, 1.0);
-    corner[k] = view_projection * world;
+    corner[k] = clip_from_world(world.xyz);
   }
 }
 

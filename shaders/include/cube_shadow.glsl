@@ -22,6 +22,9 @@ struct CubeShadowSettings {
   float normal_offset_texels;
 };
 
+// The least push off the surface, in float steps of the receiver's largest coordinate.
+const float kCubeShadowPositionSteps = 4.0;
+
 // 20 directions spread over a cube around the lookup direction (corners and edge midpoints): a
 // cheap 3D PCF kernel that needs no per-face tangent frame.
 const vec3 kCubeShadowPcfOffsets[20] = vec3[](
@@ -58,7 +61,14 @@ float cube_shadow_visibility(samplerCube shadow_cube, CubeShadowSettings setting
   float tan_angle = min(sqrt(1.0 - cos_angle * cos_angle) / cos_angle, 20.0);
   float texel = settings.texel_angle * distance_to_light;  // world size of one cube texel here
 
-  vec3 receiver = position + n * (settings.normal_offset_texels * texel);
+  // Far from the origin a stored position is exact only to a float step of its coordinates (0.0078
+  // at 1e5, more than a texel near the light): the push off the surface is at least a few such steps,
+  // else the surface shadows itself (docs/render.md "precision far from the origin"). Near the origin
+  // the steps are far below a texel and the push is the texels' exactly.
+  vec3 magnitude = abs(position);
+  float position_step = 1.1920929e-7 * max(magnitude.x, max(magnitude.y, magnitude.z));
+  float push = max(settings.normal_offset_texels * texel, kCubeShadowPositionSteps * position_step);
+  vec3 receiver = position + n * push;
   vec3 direction = receiver - light;
   float receiver_distance = length(direction);
   float bias = texel * (settings.constant_bias_texels +

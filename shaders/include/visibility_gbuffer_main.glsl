@@ -13,7 +13,7 @@
 //
 // Barycentrics: the perspective-correct weights of the pixel centre, which is what the rasteriser
 // interpolates varyings with. The triangle's corners go through the same transform as gl_Position
-// (view_projection * world); a point sum(b_i c_i) of the clip-space triangle projects to the NDC
+// (clip_from_world, camera-relative); a point sum(b_i c_i) of the clip-space triangle projects to the NDC
 // point p when sum(b_i (x_i - p.x w_i)) = 0 and sum(b_i (y_i - p.y w_i)) = 0, so b is the cross
 // product of those two vectors, normalised to sum 1 (no division by w: corners behind the camera
 // are fine). surface_point() (include/surface_point.glsl, shared with hit shading) does the rest.
@@ -87,7 +87,7 @@ void main() {
 
   const SceneTriangle triangle = scene_triangle(id.x - 1u, id.y);
   vec4 clip[3];
-  for (int i = 0; i < 3; ++i) clip[i] = view_projection * vec4(triangle.position[i], 1.0);
+  for (int i = 0; i < 3; ++i) clip[i] = clip_from_world(triangle.position[i]);
   const vec3 weights = perspective_barycentrics(clip, pixel_ndc(pixel));
   const SurfacePoint surface = surface_point(triangle, weights.yz);
 

@@ -54,8 +54,10 @@ ImageRgbaF view_depth(const ImageRgbaF& world_position, const FrameConstants& fr
   ImageRgbaF depth(world_position.width, world_position.height, vec4(0.0f, 0.0f, 0.0f, 1.0f));
   for (std::size_t i = 0; i < depth.pixels.size(); ++i) {
     const vec4& p = world_position.pixels[i];
-    // The camera looks down -z in view space, so depth is -z.
-    if (!is_background(p)) depth.pixels[i] = vec4(vec3(-(frame.view * vec4(vec3(p), 1.0f)).z), 1.0f);
+    // The camera looks down -z in view space, so depth is -z; camera-relative, as the shaders'
+    // view_from_world (exact far from the origin, docs/render.md).
+    const vec3 relative = vec3(p) - vec3(frame.camera_position);
+    if (!is_background(p)) depth.pixels[i] = vec4(vec3(-(glm::mat3(frame.view) * relative).z), 1.0f);
   }
   return depth;
 }

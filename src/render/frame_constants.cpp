@@ -36,6 +36,7 @@ FrameConstants make_frame_constants(const Scene& scene, const Aabb& world_bounds
   constants.sky_color = vec4(scene.sky_color, 1.0f);
   constants.near_far = vec4(clip.x, clip.y, 0.0f, 0.0f);
   constants.viewport = glm::ivec4(width, height, frame.frame, 0);
+  constants.relative_view_projection = constants.projection * mat4(glm::mat3(constants.view));
   return constants;
 }
 

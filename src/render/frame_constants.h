@@ -12,6 +12,8 @@
 //     ivec4 viewport;              // x width, y height, z frame number, w unused
 //     vec4 reflection_sampling;    // x SSR roughness cutoff, y sample index, z samples per pixel,
 //                                  // w 1 = glossy reflections (0: every surface a mirror); docs/glossy.md
+//     mat4 relative_view_projection;  // projection * view without its translation: takes positions
+//                                     // relative to camera_position (camera-relative rendering)
 //   };
 #include "core/math.h"
 #include "scene/camera_path.h"
@@ -37,8 +39,13 @@ struct FrameConstants {
   vec4 near_far{0.0f};
   glm::ivec4 viewport{0};
   vec4 reflection_sampling{0.0f};  // all 0: mirrors (render/reflection_sampling.h writes it)
+  // Clip space from a position relative to camera_position: the passes that project world points
+  // subtract the camera first (include/frame_constants.glsl clip_from_world), so far from the origin
+  // the rounding of large coordinates stays a common perturbation of the point instead of entering
+  // clip z and w separately (docs/render.md "precision far from the origin").
+  mat4 relative_view_projection{1.0f};
 };
-static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants) == 5 * 64 + 7 * 16,
+static_assert(std::is_standard_layout_v<FrameConstants> && sizeof(FrameConstants) == 6 * 64 + 7 * 16,
               "FrameConstants must match the std140 block above");
 
 // Near and far clip distances that enclose `world_bounds` from any camera inside or near it: far is

@@ -2,6 +2,7 @@
 
 #include "backends/registry.h"
 #include "core/error.h"
+#include "render/ray_origin_offset.h"
 #include "rt/instance_subset_tracer.h"
 
 #include <cmath>
@@ -41,8 +42,7 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
       buffers_(pixel_count(width, height), reflection_ray_memory(tracer)),
       ray_list_(width, height, buffers_),
       hit_shading_(width, height, buffers_) {
-  const float diagonal = length(scene.world_bounds().extent());
-  const float origin_offset = settings.origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f);
+  const float origin_offset = ray_origin_offset(settings.origin_offset_fraction, scene.world_bounds());
   ray_list_.set_origin_offset(origin_offset);
   if (shadow_rays) hit_shadows_.emplace(buffers_.capacity(), tracer, origin_offset);
   trace_step_ = make_reflection_trace_step(tracer, buffers_, hit_shadows_ ? &*hit_shadows_ : nullptr);

@@ -6,6 +6,7 @@
 #include "render/compute_dispatch.h"
 #include "render/frame_constants.h"
 #include "render/raster_pipeline.h"
+#include "render/ray_origin_offset.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
 
@@ -37,8 +38,7 @@ RayTracedShadows::RayTracedShadows(const Scene& scene, int width, int height, Sh
       ray_program_(ShaderProgram::from_embedded({"shadow_rays.comp.glsl"})),
       mask_program_(ShaderProgram::from_embedded({"shadow_ray_mask.comp.glsl"})) {
   mask_program_.set_uniform("occlusion_flag_bytes", buffers_.flag_bytes());
-  const float diagonal = length(scene.world_bounds().extent());
-  const float offset = origin_offset_fraction * (diagonal > 0.0f ? diagonal : 1.0f);
+  const float offset = ray_origin_offset(origin_offset_fraction, scene.world_bounds());
   if (!(offset >= 0.0f) || !std::isfinite(offset))
     fail("shadow rays: origin offset {} must be finite and >= 0", offset);
   ray_program_.set_uniform("origin_offset", offset);

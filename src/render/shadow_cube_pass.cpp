@@ -55,6 +55,13 @@ bool box_may_be_in_frustum(const Aabb& box, const mat4& view_projection) {
   return true;
 }
 
+// `box` moved by -light (the faces look from the origin), widened by a few float steps of its
+// coordinates so that the rounded subtraction never shrinks it: culling stays conservative.
+Aabb light_relative(const Aabb& box, vec3 light) {
+  const vec3 slack = 2e-7f * glm::max(glm::abs(box.min), glm::abs(box.max)) + 2e-7f * glm::abs(light);
+  return Aabb{box.min - light - slack, box.max - light + slack};
+}
+
 ShaderProgram shadow_program(ShadowCubeDraw draw) {
   if (draw == ShadowCubeDraw::layered)
     return ShaderProgram::from_embedded({"shadow_cube.vert.glsl", "shadow_cube.geom.glsl", "shadow_cube.frag.glsl"});
@@ -104,7 +111,10 @@ void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb&
       farthest = std::max(farthest, glm::length(p - light_position));
     }
   near_distance_ = farthest * 1e-5f;
-  const std::array<mat4, 6> faces = cube_face_view_projections(light_position, near_distance_);
+  // Light-relative: the faces look from the origin and the vertex shaders subtract the light, so a
+  // scene far from the origin gets the depths it gets at the origin (docs/render.md).
+  const std::array<mat4, 6> faces = cube_face_view_projections(vec3(0.0f), near_distance_);
+  program_.set_uniform("light_origin", light_position);
 
   // Reversed depth: 0 is "nothing", nearer is larger. Clip depth [0, 1] only for this pass; the
   // other passes keep GL's default [-1, 1].
@@ -120,7 +130,7 @@ void ShadowCubePass::run(const GpuScene& scene, vec3 light_position, const Aabb&
   if (draw_ == ShadowCubeDraw::layered)
     draw_layered(scene, faces);
   else
-    draw_per_face(scene, faces, chunks);
+    draw_per_face(scene, faces, chunks, light_position);
   glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
   glDepthFunc(GL_LESS);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
@@ -139,7 +149,7 @@ void ShadowCubePass::draw_layered(const GpuScene& scene, const std::array<mat4, 
 }
 
 void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces,
-                                   const ShadowChunks* chunks) {
+                                   const ShadowChunks* chunks, vec3 light) {
   // Each face's commands: the chunks that may touch it (or every instance), in order. One upload
   // per run into a buffer made once.
   const std::size_t candidates = chunks != nullptr ? chunks->chunks().size() : scene.draw_command_data().size();
@@ -151,7 +161,8 @@ void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4,
       for (const DrawElementsIndirectCommand& command : scene.draw_command_data()) out[count++] = command;
     } else {
       for (const ShadowChunk& chunk : chunks->chunks())
-        if (!chunk.world_box || box_may_be_in_frustum(*chunk.world_box, faces[face])) out[count++] = chunk.command;
+        if (!chunk.world_box || box_may_be_in_frustum(light_relative(*chunk.world_box, light), faces[face]))
+          out[count++] = chunk.command;
     }
     face_draw_counts_[face] = count;
   }

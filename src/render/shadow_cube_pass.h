@@ -50,7 +50,7 @@ public:
 
 private:
   void draw_layered(const GpuScene& scene, const std::array<mat4, 6>& faces);
-  void draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces, const ShadowChunks* chunks);
+  void draw_per_face(const GpuScene& scene, const std::array<mat4, 6>& faces, const ShadowChunks* chunks, vec3 light);
 
   int size_;
   ShadowCubeDraw draw_;

@@ -5,37 +5,18 @@
 #include "render/frame_pipeline.h"
 #include "render/scene_reflection_fade.h"
 #include "raster_test_scene.h"
+#include "transformed_scene.h"
 #include "scene/presets.h"
 #include "scene/procedural/atrium.h"
 #include "../gl/gl_test_context.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
-
-#include <algorithm>
-#include <cstdlib>
-#include <string>
 
 namespace glint::render {
 namespace {
 
-// `scene` scaled by `scale` about the origin, then moved by `offset`: its instances, light and
-// walkthrough (the light's range and the scene's own fade, if any, scale too).
-Scene transformed(Scene scene, float scale, vec3 offset) {
-  const mat4 placement = glm::translate(mat4(1.0f), offset) * glm::scale(mat4(1.0f), vec3(scale));
-  const auto place = [&](vec3& point) { point = point * scale + offset; };
-  for (Instance& instance : scene.instances) instance.transform = placement * instance.transform;
-  place(scene.light.position);
-  scene.light.range *= scale;
-  for (vec3& point : scene.walkthrough.camera.points) place(point);
-  for (vec3& point : scene.walkthrough.camera.targets) place(point);
-  for (vec3& point : scene.walkthrough.light.points) place(point);
-  if (scene.reflection_fade) {
-    scene.reflection_fade->start *= scale;
-    scene.reflection_fade->end *= scale;
-  }
-  return scene;
-}
+using testing::image_difference;
+using testing::transformed;
 
 TEST(SceneReflectionFade, AtriumKeepsThePapersFadeExactly) {
   {  // atrium-simple: `atrium` is the same building with denser creatures, and make_atrium sets both
@@ -105,31 +86,10 @@ ImageRgba8 render_atrium(const Scene& scene, bool fade_from_scene) {
   return pipeline.read_final();
 }
 
-struct Difference {
-  int pixels = 0;   // pixels differing by more than 8 in some channel
-  int largest = 0;  // the largest channel difference
-  std::string text() const {
-    return std::to_string(pixels) + " pixels differ by more than 8, the most by " + std::to_string(largest);
-  }
-};
-
-Difference difference(const ImageRgba8& a, const ImageRgba8& b) {
-  Difference result;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-    int d = 0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.pixels[i][c]) - int(b.pixels[i][c])));
-    result.pixels += d > 8;
-    result.largest = std::max(result.largest, d);
-  }
-  return result;
-}
-
 // A copy of the atrium at another scale renders the same picture, reflections and their fade
 // included, up to float noise: single pixels on edges and fine texture detail (0.6 % of them at
 // x1000 on llvmpipe). The copy scaled by 0.001 also guards the clip range, whose floors in world
-// units once clipped it away (frame_constants.h). A copy moved 1e5 away is not compared: its depth
-// is computed from world coordinates of that size, and surfaces near each other swap (the fade is
-// the same, IsTheSameFractionOfAnyScenesDiagonal).
+// units once clipped it away (frame_constants.h). Copies moved far away: far_from_origin_test.cpp.
 TEST_F(SceneReflectionFadeGlTest, AtriumScaledRendersTheSameReflections) {
   Scene atrium = make_preset("atrium-simple");
   atrium.reflection_fade.reset();  // the size rule, not the preset's own fade
@@ -137,12 +97,13 @@ TEST_F(SceneReflectionFadeGlTest, AtriumScaledRendersTheSameReflections) {
   constexpr int kNoise = kWidth * kHeight / 100;
   for (const float scale : {1000.0f, 0.001f}) {
     const Scene other = transformed(atrium, scale, vec3(0.0f));
-    const Difference fitted = difference(original, render_atrium(other, true));
+    const testing::ImageDifference fitted = image_difference(original, render_atrium(other, true));
     EXPECT_LE(fitted.pixels, kNoise) << "scaled by " << scale << ": " << fitted.text();
   }
   // The control: with the fade at fixed world distances (15..30) the copy scaled by 1000 loses the
   // floor's reflections, so the comparison above can fail.
-  const Difference fixed = difference(original, render_atrium(transformed(atrium, 1000.0f, vec3(0.0f)), false));
+  const testing::ImageDifference fixed =
+      image_difference(original, render_atrium(transformed(atrium, 1000.0f, vec3(0.0f)), false));
   EXPECT_GT(fixed.pixels, 10 * kNoise) << "fade fixed at 15..30 world units: " << fixed.text();
 }
 
