@@ -343,7 +343,7 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--ssr-thickness", options.ssr_thickness,
                       "How far behind a surface an SSR ray still meets it, as a fraction of its view depth (0..1]")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::PositiveNumber & CLI::Range(0.0f, 1.0f))
       ->capture_default_str();
   command->add_option("--ssr-confidence", options.ssr_confidence,
                       "Lowest confidence of a trusted SSR hit; below it the pixel fails (0..1)")

@@ -6,6 +6,7 @@
 #include "core/untrusted_text.h"
 #include "core/utc_timestamp.h"
 #include "render/frame_pipeline.h"
+#include "render/scene_reflection_fade.h"
 
 #include <algorithm>
 #include <chrono>
@@ -31,6 +32,14 @@ nlohmann::json memory_summary(std::optional<std::uint64_t> first, std::optional<
           {"peak", static_cast<double>(*peak) / kBytesPerMegabyte}};
 }
 
+// The distance fade the frames used (render/scene_reflection_fade.h), in world units, and whence.
+nlohmann::json reflection_fade_summary(const Scene& scene) {
+  const DistanceFade fade = render::scene_reflection_fade(scene);
+  return {{"start", fade.start},
+          {"end", fade.end},
+          {"from", scene.reflection_fade ? "the scene" : "the scene's bounds diagonal"}};
+}
+
 nlohmann::json scene_summary(const Scene& scene) {
   return {{"name", untrusted_text(scene.name)},  // from the scene file: bounded, escaped
           {"source", scene.source},
@@ -41,7 +50,8 @@ nlohmann::json scene_summary(const Scene& scene) {
           {"vertices", scene.vertex_count()},
           {"triangles", scene.triangle_count()},
           {"deformable_meshes", scene.deformable_meshes().size()},
-          {"walkthrough_frames", scene.walkthrough.frame_count}};
+          {"walkthrough_frames", scene.walkthrough.frame_count},
+          {"reflection_fade", reflection_fade_summary(scene)}};
 }
 
 nlohmann::json options_summary(const RenderOptions& options) {

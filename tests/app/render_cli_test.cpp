@@ -82,6 +82,10 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
   EXPECT_EQ(run["ray_tracer"]["rebuilds"].get<int>() + run["ray_tracer"]["refits"].get<int>(), 2 * 2)
       << "two deforming dinosaurs, updated at each of the two frames";
   EXPECT_EQ(run["scene"]["name"], "atrium-simple");
+  // The paper's fade, which the atrium presets keep (render/scene_reflection_fade.h).
+  EXPECT_EQ(run["scene"]["reflection_fade"]["start"], 15.0);
+  EXPECT_EQ(run["scene"]["reflection_fade"]["end"], 30.0);
+  EXPECT_EQ(run["scene"]["reflection_fade"]["from"], "the scene");
   EXPECT_NE(run["command"].get<std::string>().find("render atrium-simple"), std::string::npos);
 
   for (const auto& entry : fs::directory_iterator(out))
@@ -134,6 +138,9 @@ TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
 
   EXPECT_EQ(run_glint("render atrium-simple --reflections maybe --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --width 0 --out " + quoted(out)).exit_code, 2);
+  // SSR's thickness is a fraction of the view depth, (0, 1].
+  EXPECT_EQ(run_glint("render atrium-simple --ssr-thickness 2 --out " + quoted(out)).exit_code, 2);
+  EXPECT_EQ(run_glint("render atrium-simple --ssr-thickness 0 --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --frames 3:1 --out " + quoted(out)).exit_code, 1);
   EXPECT_EQ(run_glint("render atrium-simple --backend optix9 --out " + quoted(out)).exit_code, 2);
   EXPECT_EQ(run_glint("render atrium-simple --accel octree --out " + quoted(out)).exit_code, 2);
