@@ -2,6 +2,7 @@
 
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_summary.h"
+#include "app/bench/experiment_render_options.h"
 #include "app/bench/paper_matrix.h"
 #include "app/bench/plot_script.h"
 #include "app/bench/reflection_cost.h"
@@ -49,19 +50,10 @@ struct AdaptivePoint {
 
 RenderOptions render_options(const std::string& scene, const AdaptiveConfig& config, const std::string& backend,
                              const BenchOptions& options) {
-  RenderOptions render;
-  render.scene = scene;
+  RenderOptions render = experiment_render_options(scene, backend, options);
   render.reflections = config.reflections;
   render.ray_budget = config.ray_budget;
-  render.backend = backend;
-  render.width = options.width;
-  render.height = options.height;
-  render.timings_only = true;
   render.deform = "off";  // Table I's static frames: every configuration sees the same geometry
-  render.shadow_map_size = options.shadow_map_size;
-  render.gbuffer = options.gbuffer;
-  render.shadows = options.shadows;
-  render.command_line = options.command_line;
   return render;
 }
 

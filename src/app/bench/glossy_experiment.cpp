@@ -2,6 +2,7 @@
 
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_summary.h"
+#include "app/bench/experiment_render_options.h"
 #include "app/bench/paper_matrix.h"
 #include "app/bench/reflection_cost.h"
 #include "app/frame_loop.h"
@@ -47,20 +48,6 @@ struct GlossyPoint {
 
 double finite_psnr(double psnr) { return std::isfinite(psnr) ? std::min(psnr, kIdenticalPsnr) : kIdenticalPsnr; }
 
-RenderOptions base_render_options(const std::string& scene, const std::string& backend, const BenchOptions& options) {
-  RenderOptions render;
-  render.scene = scene;
-  render.backend = backend;
-  render.width = options.width;
-  render.height = options.height;
-  render.timings_only = true;
-  render.shadow_map_size = options.shadow_map_size;
-  render.gbuffer = options.gbuffer;
-  render.shadows = options.shadows;
-  render.command_line = options.command_line;
-  return render;
-}
-
 FrameLoopOptions loop_options(const RenderOptions& render) {
   return {render.width, render.height, render.deform == "on", deforms_on_gpu(render)};
 }
@@ -94,7 +81,7 @@ struct References {
 References converged_references(const Scene& rest, const std::string& name, const std::vector<int>& frames,
                                 const std::string& backend, const BenchOptions& options,
                                 const HeadlessGlContext& context, ProgressBar& progress) {
-  RenderOptions render = base_render_options(name, backend, options);
+  RenderOptions render = experiment_render_options(name, backend, options);
   render.reflections = "rt";
   render.glossy = "on";
   render.spp = options.reference_spp;
@@ -240,7 +227,7 @@ int run_glossy_experiment(const BenchOptions& options) {
     const References references = converged_references(rest, name, frames, backend, options, context, progress);
     nlohmann::json entries = nlohmann::json::array();
     for (const GlossyConfig& config : configs) {
-      RenderOptions render = base_render_options(name, backend, options);
+      RenderOptions render = experiment_render_options(name, backend, options);
       render.reflections = config.reflections;
       render.glossy = config.glossy ? "on" : "off";
       render.denoise = config.denoise ? "on" : "off";
