@@ -1,8 +1,11 @@
-// A regression guard on the whole frame: one atrium frame at low resolution against a stored image.
+// A regression guard on the whole frame: one atrium frame at low resolution (the pipeline's default
+// settings: ssr reflections, cube shadows, raster G-buffer) against a stored image made on llvmpipe.
 // Rendering differs slightly between GL implementations (rasterisation rules, texture filtering,
-// float precision), so the comparison is by SSIM and PSNR with thresholds that llvmpipe and NVIDIA
-// both meet with margin (docs/render.md lists the values measured on each); a broken pass (no
-// shadows, no reflections, wrong lighting) drops far below them.
+// float precision), so the comparison is by SSIM and PSNR, with two sets of thresholds (their reasons
+// and the values measured on each renderer: docs/render.md, "Golden image"): on llvmpipe, where only
+// float noise separates a run from the stored image, tight enough to catch a change of the SSR image
+// like the trusted march's (SSIM 0.968, 26.2 dB); on other renderers (NVIDIA) looser, above what a
+// different renderer alone costs. A broken pass (no shadows, no reflections) drops far below both.
 //
 // After an intended change of the image: GLINT_UPDATE_GOLDEN=1 glint_tests --gtest_filter='GoldenImage*'
 // rewrites the stored image (look at it before committing it).
@@ -25,8 +28,13 @@ namespace {
 using GoldenImage = testing::GlTest;
 
 constexpr int kFrame = 2100;
-constexpr double kMinimumSsim = 0.90;
-constexpr double kMinimumPsnr = 24.0;
+
+struct Thresholds {
+  double ssim;  // luma SSIM
+  double psnr;  // dB
+};
+constexpr Thresholds kOnLlvmpipe{0.99, 35.0};
+constexpr Thresholds kOnOtherRenderers{0.98, 30.0};
 
 TEST_F(GoldenImage, AtriumFrame2100MatchesTheStoredImage) {
   const std::filesystem::path golden = testing::source_dir() / "tests/data/golden/atrium_frame02100_128x72.png";
@@ -44,8 +52,10 @@ TEST_F(GoldenImage, AtriumFrame2100MatchesTheStoredImage) {
   const metrics::ImageComparison comparison = metrics::compare_images(image, read_png(golden));
   std::printf("golden image: SSIM %.4f, PSNR %.2f dB on %s\n", comparison.ssim.luma, comparison.error.psnr,
               context().renderer().c_str());
-  EXPECT_GE(comparison.ssim.luma, kMinimumSsim);
-  EXPECT_GE(comparison.error.psnr, kMinimumPsnr);
+  const bool llvmpipe = context().renderer().find("llvmpipe") != std::string::npos;
+  const Thresholds minimum = llvmpipe ? kOnLlvmpipe : kOnOtherRenderers;
+  EXPECT_GE(comparison.ssim.luma, minimum.ssim);
+  EXPECT_GE(comparison.error.psnr, minimum.psnr);
 }
 
 }  // namespace
