@@ -1,8 +1,9 @@
 // Wavefront OBJ loading in four stages, each in its own file:
 //   1 obj_validation     one fast pass over the text: malformed lines become "file.obj:LINE: ..." errors
 //   2 obj_materials      the MTL libraries (mtl_reader), with warnings for missing files and names
-//   3 tinyobjloader      parsing and triangulation
-//   4 obj_mesh_assembly  meshes per (object, material), then degenerate removal and normals here
+//   3 tinyobjloader      parsing (faces left as polygons: its triangulation breaks concave ones)
+//   4 obj_mesh_assembly  meshes per (object, material), polygons split by polygon_triangulation, then
+//                        degenerate removal and normals here
 // How MTL statements map onto glint::Material is documented in mtl_reader.h.
 #include "scene/obj_loader.h"
 
@@ -57,6 +58,28 @@ void check_face_indices(const tinyobj::attrib_t& attrib, const std::vector<tinyo
              file_label, attrib.vertices.size() / 3, attrib.texcoords.size() / 2, attrib.normals.size() / 3);
 }
 
+// The faces untriangulated, as the validation pass counted them: the same faces in the same order,
+// each with as many corners (tinyobjloader's counts are 8-bit, so only count % 256 can be compared).
+// A disagreement would split the corner list at the wrong places.
+void check_face_vertex_counts(const std::vector<tinyobj::shape_t>& shapes, const ObjTextSummary& summary,
+                              const std::string& file_label) {
+  const std::vector<std::uint16_t>& counts = summary.face_vertex_counts;
+  std::size_t face = 0, corners = 0, tinyobj_corners = 0;
+  bool agree = true;
+  for (const tinyobj::shape_t& shape : shapes) {
+    tinyobj_corners += shape.mesh.indices.size();
+    for (const unsigned char count : shape.mesh.num_face_vertices) {
+      agree = agree && face < counts.size() && count == counts[face] % 256;
+      if (face < counts.size()) corners += counts[face];
+      ++face;
+    }
+  }
+  if (!agree || face != counts.size() || corners != tinyobj_corners)
+    fail("{}: tinyobjloader read {} faces with {} vertex references where glint read {} 'f' lines (separate an 'f' "
+         "line's keyword and vertex references with spaces or tabs)",
+         file_label, face, tinyobj_corners, counts.size());
+}
+
 // Drops zero-area triangles (one warning for the file) and the meshes left without any.
 void remove_degenerate_geometry(std::vector<ObjMeshPart>& parts, const std::string& file_label) {
   std::size_t dropped = 0;
@@ -75,7 +98,7 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   const ObjMaterialLibrary library = load_obj_material_library(path, summary);
 
   tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
+  config.triangulate = false;  // obj_mesh_assembly splits polygons (polygon_triangulation.h)
   config.vertex_color = false;  // glint has no vertex colours; skip filling them
   tinyobj::ObjReader reader;
   // tinyobjloader reads materials when it meets `mtllib`, and a `usemtl` above that line would find
@@ -89,9 +112,10 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, untrusted_text(reader.Warning()));
 
   check_face_indices(reader.GetAttrib(), reader.GetShapes(), file_label);
+  check_face_vertex_counts(reader.GetShapes(), summary, file_label);
   std::vector<ObjMeshPart> parts =
-      assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), library_index_of_tinyobj_ids(reader.GetMaterials(), library),
-                          library.names(), path.stem().string());
+      assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), summary.face_vertex_counts,
+                          library_index_of_tinyobj_ids(reader.GetMaterials(), library), library.names(), path.stem().string());
   remove_degenerate_geometry(parts, file_label);
   for (ObjMeshPart& part : parts) {
     if (!part.mesh.normals.empty()) continue;

@@ -1,7 +1,10 @@
 #include "scene/obj_mesh_assembly.h"
 
+#include "scene/polygon_triangulation.h"
+
 #include <cstdint>
 #include <map>
+#include <span>
 #include <unordered_map>
 #include <utility>
 
@@ -81,6 +84,7 @@ Mesh finish_mesh(PartBuilder& part, const tinyobj::attrib_t& attrib) {
 }  // namespace
 
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                                             std::span<const std::uint16_t> face_vertex_counts,
                                              const std::vector<int>& material_of_tinyobj_id,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape) {
@@ -88,20 +92,31 @@ std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, co
   // (shape name, material) -> index into parts. tinyobjloader starts a new shape_t at every
   // `usemtl`, so the same name can come back many times; those faces belong together.
   std::map<std::pair<std::string, int>, std::size_t> part_of_key;
+  std::vector<vec3> polygon;  // one polygonal face's positions, reused
+  std::size_t file_face = 0;  // the face's place among all `f` lines of the file
   for (const tinyobj::shape_t& shape : shapes) {
     const std::string shape_name = shape.name.empty() ? std::string(unnamed_shape) : shape.name;
     std::size_t offset = 0;
     for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-      const std::size_t corners = shape.mesh.num_face_vertices[face];
-      // Triangulation is on, so every face has 3 corners; anything else would not be a triangle.
-      if (corners == 3) {
+      const std::size_t corners = face_vertex_counts[file_face++];
+      // Faces come untriangulated (tinyobjloader's triangulation breaks concave polygons):
+      // polygons are split here, in their own plane.
+      if (corners >= 3) {
         const int id = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
         const int material =
             id >= 0 && static_cast<std::size_t>(id) < material_of_tinyobj_id.size() ? material_of_tinyobj_id[id] : -1;
         const auto [it, inserted] = part_of_key.try_emplace({shape_name, material}, parts.size());
         if (inserted) parts.push_back(PartBuilder{shape_name, material, {}, {}, {}});
         PartBuilder& part = parts[it->second];
-        for (std::size_t k = 0; k < 3; ++k) part.add_corner(shape.mesh.indices[offset + k]);
+        const std::span<const tinyobj::index_t> face_corners(shape.mesh.indices.data() + offset, corners);
+        if (corners == 3) {
+          for (const tinyobj::index_t& corner : face_corners) part.add_corner(corner);
+        } else {
+          polygon.clear();
+          for (const tinyobj::index_t& corner : face_corners) polygon.push_back(read_vec3(attrib.vertices, corner.vertex_index));
+          for (const std::array<std::uint32_t, 3>& triangle : triangulate_polygon(polygon))
+            for (const std::uint32_t k : triangle) part.add_corner(face_corners[k]);
+        }
       }
       offset += corners;
     }

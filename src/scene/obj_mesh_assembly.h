@@ -5,6 +5,8 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,14 +21,17 @@ struct ObjMeshPart {
 // Faces are grouped by (shape name, material) in the order they first appear, so an object that
 // switches materials becomes one mesh per material, named "<shape>/<material>", or "<shape>" when
 // the shape uses one material (faces without one count as material "default"). A shape without a
-// name is called `unnamed_shape`. Per mesh:
+// name is called `unnamed_shape`. Faces of more than three corners are split by triangulate_polygon
+// (scene/polygon_triangulation.h). Per mesh:
 // - uvs: filled when any face has texture coordinates (corners without one get (0, 0)), else empty;
 // - normals: the file's normals, normalised, when every corner has one and none is zero-length;
 //   otherwise left empty for the caller to compute (a mix of given and computed normals would shade
 //   inconsistently).
-// `material_of_tinyobj_id[id]` maps tinyobjloader's per-face material id to an index into
-// `material_names` (-1 when unknown).
+// `face_vertex_counts` is every face's vertex count in file order (ObjTextSummary's, which the
+// caller has checked against the shapes: tinyobjloader's own are 8-bit). `material_of_tinyobj_id[id]`
+// maps tinyobjloader's per-face material id to an index into `material_names` (-1 when unknown).
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
+                                             std::span<const std::uint16_t> face_vertex_counts,
                                              const std::vector<int>& material_of_tinyobj_id,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape);

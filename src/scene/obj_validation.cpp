@@ -33,7 +33,8 @@ private:
   // Reads the numbers after a `v`, `vt` or `vn` keyword; the count must be in [min_count, max_count].
   void check_numbers(std::string_view keyword, std::string_view rest, int min_count, int max_count,
                      std::string_view expected);
-  void check_element_list(std::string_view keyword, std::string_view rest, int min_vertices);
+  // Returns the number of vertex references.
+  std::size_t check_element_list(std::string_view keyword, std::string_view rest, int min_vertices);
   void check_vertex_reference(std::string_view reference);
   void check_index(std::string_view index_text, std::size_t defined, std::string_view element,
                    std::string_view reference);
@@ -62,8 +63,7 @@ void ObjTextValidator::check_line(std::string_view line, std::size_t line_number
     check_numbers(keyword, rest, 3, 3, "3 (x y z)");
     ++summary_.normal_count;
   } else if (keyword == "f") {
-    check_element_list(keyword, rest, 3);
-    ++summary_.face_count;
+    summary_.face_vertex_counts.push_back(static_cast<std::uint16_t>(check_element_list(keyword, rest, 3)));
   } else if (keyword == "l") {
     check_element_list(keyword, rest, 2);
   } else if (keyword == "p") {
@@ -88,11 +88,11 @@ void ObjTextValidator::check_numbers(std::string_view keyword, std::string_view 
     fail_here("'{}' line has {} number{}, expected {}", keyword, count, count == 1 ? "" : "s", expected);
 }
 
-void ObjTextValidator::check_element_list(std::string_view keyword, std::string_view rest, int min_vertices) {
+std::size_t ObjTextValidator::check_element_list(std::string_view keyword, std::string_view rest, int min_vertices) {
   std::size_t count = 0;
   for (std::string_view token = take_token(rest); !token.empty(); token = take_token(rest)) {
-    // tinyobjloader's triangulation is quadratic in a face's vertices (a 20,000-vertex face took
-    // seconds, 200,000 minutes): refuse large faces before it sees them.
+    // Triangulation is quadratic in a face's vertices (tinyobjloader's took seconds for a 20,000-vertex
+    // face, minutes for 200,000): refuse large faces before anything is allocated for them.
     if (keyword == "f" && count == kMaxObjFaceVertices)
       fail_here("the face has more than {} vertices, glint's limit per face; triangulate the model (or split the "
                 "polygon) when exporting it",
@@ -103,6 +103,7 @@ void ObjTextValidator::check_element_list(std::string_view keyword, std::string_
   if (count < static_cast<std::size_t>(min_vertices))
     fail_here("'{}' line has {} vertex reference{}, at least {} needed", keyword, count, count == 1 ? "" : "s",
               min_vertices);
+  return count;
 }
 
 void ObjTextValidator::check_vertex_reference(std::string_view reference) {
@@ -155,7 +156,7 @@ void ObjTextValidator::add_material_library(std::string_view rest) {
 }
 
 ObjTextSummary ObjTextValidator::finish() {
-  if (summary_.face_count == 0) fail("{}: the file has no faces ('f' lines), so there is nothing to render", file_);
+  if (summary_.face_vertex_counts.empty()) fail("{}: the file has no faces ('f' lines), so there is nothing to render", file_);
   return std::move(summary_);
 }
 

@@ -5,16 +5,17 @@
 // "<file>:<line>: <what is wrong>", and collects the `mtllib`/`usemtl` references (with their lines)
 // that the material stage needs for its warnings.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace glint {
 
-// The most vertices an OBJ face ('f' line) may have (docs/scene-format.md, "Limits"): tinyobjloader
-// triangulates a polygon by ear clipping in time quadratic in its vertex count, so one crafted line
-// could hold glint for minutes. Real models' faces are triangles and quads, and n-gons of tens to
-// hundreds of vertices; a 1,024-vertex convex face triangulates in about 0.2 s (2-core machine).
+// The most vertices an OBJ face ('f' line) may have (docs/scene-format.md, "Limits"): a polygon is
+// triangulated by ear clipping (polygon_triangulation.h) in time quadratic in its vertex count or
+// worse, so one crafted line could hold glint for minutes. Real models' faces are triangles and
+// quads, and n-gons of tens to hundreds of vertices.
 inline constexpr std::size_t kMaxObjFaceVertices = 1024;
 
 struct ObjLineReference {
@@ -26,7 +27,9 @@ struct ObjTextSummary {
   std::size_t position_count = 0;  // `v` lines
   std::size_t texcoord_count = 0;  // `vt` lines
   std::size_t normal_count = 0;    // `vn` lines
-  std::size_t face_count = 0;      // `f` lines (polygons, before triangulation)
+  // Each `f` line's vertex count, in file order (tinyobjloader keeps them in 8 bits: a face of 256
+  // or more vertices would come back as count % 256).
+  std::vector<std::uint16_t> face_vertex_counts;
   std::vector<ObjLineReference> material_libraries;  // each `mtllib` line's file name(s), as written
   std::vector<ObjLineReference> materials_used;      // each distinct `usemtl` name, at its first use
 };
