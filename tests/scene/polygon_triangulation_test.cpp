@@ -126,6 +126,25 @@ TEST(PolygonTriangulation, PointsOnAnEdgeStayCornersOfNonDegenerateTriangles) {
   EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](bool u) { return u; }));
 }
 
+TEST(PolygonTriangulation, AHoleJoinedToTheOutlineByABridgeStaysOpen) {
+  // A 2 x 2 square with a 1 x 1 hole, written as one polygon that runs from the outline's last
+  // corner to the hole, around it the other way, and back (as CAD exporters write holes).
+  const std::vector<vec3> outline = {{0, 0, 0}, {2, 0, 0}, {2, 0, -2}, {0, 0, -2}};
+  const std::vector<vec3> hole = {{0.5f, 0, -0.5f}, {1.5f, 0, -0.5f}, {1.5f, 0, -1.5f}, {0.5f, 0, -1.5f}};
+  const std::vector<vec3> corners = {outline[0], outline[1], outline[2], outline[3], hole[3],
+                                     hole[2],    hole[1],    hole[0],    hole[3],    outline[3]};
+  const Triangles triangles = triangulate_polygon(corners);
+  ASSERT_EQ(triangles.size(), corners.size() - 2);
+  double total = 0.0;
+  for (const auto& t : triangles) {
+    const double signed_area = signed_area_xz(corners[t[0]], corners[t[1]], corners[t[2]]);
+    EXPECT_GE(signed_area, 0.0);
+    total += signed_area;
+    EXPECT_FALSE(inside_triangle_xz(vec3(1.0f, 0, -1.0f), corners[t[0]], corners[t[1]], corners[t[2]])) << "the hole is covered";
+  }
+  EXPECT_NEAR(total, 3.0, 1e-9);
+}
+
 TEST(PolygonTriangulation, SelfIntersectingAndFlatPolygonsEndWithAtMostNMinusTwoTriangles) {
   const std::vector<vec3> bow_tie = {{0, 0, 0}, {1, 0, 0}, {0, 0, -1}, {1, 0, -1}, {0.5f, 0, 0.5f}};
   EXPECT_LE(triangulate_polygon(bow_tie).size(), 3u);
