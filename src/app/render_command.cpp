@@ -106,14 +106,6 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
       fail("--accel kdtree applies to the cpu and cuda backends; the gl backend traces BVHs only");
   }
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
-  // Caught here, before anything is written, rather than at the first deformed frame: sbvh's split
-  // references cannot be refitted.
-  if (render::uses_ray_tracer(settings) && options.deform == "on" && backend.takes_glint_builders &&
-      !rt::blas_structure_refittable(settings.ray_tracing.accel.structure()) &&
-      settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
-    fail("--accel {} cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
-         "or --deform off",
-         options.accel, options.update);
   if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
       !backends::is_gpu_backend(options.backend))
     fail("--deform-on gpu needs --backend {} when rays are traced (reflections hybrid or rt, shadows rt or "
@@ -123,6 +115,18 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
   return settings;
 }
 
+
+void check_structure_follows_deformation(const RenderOptions& options, const render::FramePipelineSettings& settings,
+                                         const Scene& scene) {
+  // Only a scene that deforms refits: a static one takes every structure with any --update.
+  if (options.deform != "on" || scene.deformable_meshes().empty() || !render::uses_ray_tracer(settings)) return;
+  if (!backends::find_backend(options.backend).takes_glint_builders) return;
+  if (!rt::blas_structure_refittable(settings.ray_tracing.accel.structure()) &&
+      settings.ray_tracing.update != rt::UpdatePolicy::rebuild)
+    fail("--accel {} cannot be refitted, so --update {} cannot follow the deforming meshes; use --update rebuild "
+         "or --deform off",
+         options.accel, options.update);
+}
 
 std::vector<int> preview_frames(int frame_count) {
   std::vector<int> frames;
@@ -387,6 +391,7 @@ int run_render_command(const RenderOptions& options) {
   LoadOptions load;
   load.flat_normals = options.flat_normals;
   Scene scene = load_scene(options.scene, load);
+  check_structure_follows_deformation(options, settings, scene);
   if (fixed_camera) {
     fixed_camera->fov_y_degrees = scene.walkthrough.camera.fov_y_degrees;
     scene.walkthrough.camera = *fixed_camera;

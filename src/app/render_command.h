@@ -73,9 +73,16 @@ struct RenderOptions {
 };
 
 // The frame pipeline's settings for `options`, checked: glint::Error with one line naming the flag for
-// combinations that cannot run (--accel with embree, sbvh with refit on deforming meshes, --deform-on
-// gpu with a CPU backend). `glint bench` builds every cell's settings through it too.
+// combinations that cannot run (--accel with embree, --deform-on gpu with a CPU backend). `glint
+// bench` builds every cell's settings through it too.
 render::FramePipelineSettings render_pipeline_settings(const RenderOptions& options);
+
+// glint::Error (one line naming the flags) when `scene` has meshes to deform (--deform on) and rays
+// are traced through a structure that cannot be refitted (--accel sbvh or kdtree) with --update
+// refit or auto; checked once the scene is loaded, before anything is written, rather than at the
+// first deformed frame. A static scene never refits, so it takes those structures with any --update.
+void check_structure_follows_deformation(const RenderOptions& options, const render::FramePipelineSettings& settings,
+                                         const Scene& scene);
 
 // Whether the deformable meshes are posed on the GPU (--deform-on, resolved against --backend).
 bool deforms_on_gpu(const RenderOptions& options);

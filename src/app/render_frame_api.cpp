@@ -30,6 +30,7 @@ ImageRgba8 render_frame(const RenderOptions& options, int frame) {
   Scene scene = load_scene(options.scene, load);
   const std::vector<int> frames = selection.resolve(WalkthroughAnimation(scene).frame_count());
   const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
+  check_structure_follows_deformation(options, settings, scene);
   if (render::uses_ray_tracer(settings)) {
     backends::check_backend_runnable(options.backend);
   }

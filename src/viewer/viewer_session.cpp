@@ -83,8 +83,9 @@ void ViewerSession::rebuild() {
   loop_.reset();  // its GL objects go before the new ones are made
   scene_ = working_scene();
   try {
-    loop_ = std::make_unique<FrameLoop>(scene_, render_pipeline_settings(options_), loop_options(options_),
-                                        pass_timing_);
+    const render::FramePipelineSettings settings = render_pipeline_settings(options_);
+    check_structure_follows_deformation(options_, settings, scene_);
+    loop_ = std::make_unique<FrameLoop>(scene_, settings, loop_options(options_), pass_timing_);
   } catch (const Error&) {
     // Back to the settings that last built (the caller shows the error); the next render uses them.
     if (built_options_) options_ = *built_options_;
