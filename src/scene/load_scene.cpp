@@ -1,6 +1,7 @@
 #include "scene/load_scene.h"
 
 #include "core/error.h"
+#include "scene/coordinate_precision.h"
 #include "scene/gltf_loader.h"
 #include "scene/obj_loader.h"
 #include "scene/presets.h"
@@ -36,9 +37,11 @@ Scene load_scene(std::string_view preset_or_path, const LoadOptions& options) {
   if (!std::filesystem::exists(path)) fail("{}: no such file", path.string());
   if (std::filesystem::is_directory(path)) fail("{}: is a directory, not a scene file", path.string());
 
-  if (ends_with_ignoring_case(name, ".obj")) return load_obj(path, options);
-  if (ends_with_ignoring_case(name, ".scene.json")) return load_scene_json(path, options);
-  return load_gltf(path, options);
+  Scene scene = ends_with_ignoring_case(name, ".obj")          ? load_obj(path, options)
+                : ends_with_ignoring_case(name, ".scene.json") ? load_scene_json(path, options)
+                                                               : load_gltf(path, options);
+  warn_about_coarse_coordinates(scene);
+  return scene;
 }
 
 }  // namespace glint
