@@ -114,7 +114,7 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   check_face_indices(reader.GetAttrib(), reader.GetShapes(), file_label);
   check_face_vertex_counts(reader.GetShapes(), summary, file_label);
   std::vector<ObjMeshPart> parts =
-      assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), summary.face_vertex_counts,
+      assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), summary.face_vertex_counts, summary.smoothing_groups,
                           library_index_of_tinyobj_ids(reader.GetMaterials(), library), library.names(), path.stem().string());
   remove_degenerate_geometry(parts, file_label);
   for (ObjMeshPart& part : parts) {

@@ -15,6 +15,10 @@ struct VertexKey {
   int position;
   int texcoord;  // -1 when the corner has none
   int normal;    // -1 when the corner has none
+  // Without a normal, corners of different smoothing groups are different vertices, so that computed
+  // normals are smooth within a group only: the group (> 0), minus one minus the file's face number
+  // for a face under "s off" (its own vertices: flat), or 0 (no groups in the file, or a normal given).
+  long long smoothing;
   bool operator==(const VertexKey&) const = default;
 };
 
@@ -24,6 +28,7 @@ struct VertexKeyHash {
     std::uint64_t hash = static_cast<std::uint32_t>(key.position);
     hash = (hash * kMultiplier) ^ static_cast<std::uint32_t>(key.texcoord);
     hash = (hash * kMultiplier) ^ static_cast<std::uint32_t>(key.normal);
+    hash = (hash * kMultiplier) ^ static_cast<std::uint64_t>(key.smoothing);
     return static_cast<std::size_t>(hash ^ (hash >> 31));
   }
 };
@@ -36,8 +41,9 @@ struct PartBuilder {
   std::unordered_map<VertexKey, std::uint32_t, VertexKeyHash> vertex_of_key;
   std::vector<std::uint32_t> indices;
 
-  void add_corner(const tinyobj::index_t& corner) {
-    const VertexKey key{corner.vertex_index, corner.texcoord_index, corner.normal_index};
+  void add_corner(const tinyobj::index_t& corner, long long smoothing) {
+    const VertexKey key{corner.vertex_index, corner.texcoord_index, corner.normal_index,
+                        corner.normal_index < 0 ? smoothing : 0};
     const auto [it, inserted] = vertex_of_key.try_emplace(key, static_cast<std::uint32_t>(vertices.size()));
     if (inserted) vertices.push_back(key);
     indices.push_back(it->second);
@@ -84,7 +90,7 @@ Mesh finish_mesh(PartBuilder& part, const tinyobj::attrib_t& attrib) {
 }  // namespace
 
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
-                                             std::span<const std::uint16_t> face_vertex_counts,
+                                             std::span<const std::uint16_t> face_vertex_counts, bool smoothing_groups,
                                              const std::vector<int>& material_of_tinyobj_id,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape) {
@@ -98,7 +104,7 @@ std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, co
     const std::string shape_name = shape.name.empty() ? std::string(unnamed_shape) : shape.name;
     std::size_t offset = 0;
     for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
-      const std::size_t corners = face_vertex_counts[file_face++];
+      const std::size_t corners = face_vertex_counts[file_face];
       // Faces come untriangulated (tinyobjloader's triangulation breaks concave polygons):
       // polygons are split here, in their own plane.
       if (corners >= 3) {
@@ -109,16 +115,20 @@ std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, co
         if (inserted) parts.push_back(PartBuilder{shape_name, material, {}, {}, {}});
         PartBuilder& part = parts[it->second];
         const std::span<const tinyobj::index_t> face_corners(shape.mesh.indices.data() + offset, corners);
+        const unsigned group = face < shape.mesh.smoothing_group_ids.size() ? shape.mesh.smoothing_group_ids[face] : 0u;
+        const long long smoothing =
+            !smoothing_groups ? 0 : group > 0 ? static_cast<long long>(group) : -1 - static_cast<long long>(file_face);
         if (corners == 3) {
-          for (const tinyobj::index_t& corner : face_corners) part.add_corner(corner);
+          for (const tinyobj::index_t& corner : face_corners) part.add_corner(corner, smoothing);
         } else {
           polygon.clear();
           for (const tinyobj::index_t& corner : face_corners) polygon.push_back(read_vec3(attrib.vertices, corner.vertex_index));
           for (const std::array<std::uint32_t, 3>& triangle : triangulate_polygon(polygon))
-            for (const std::uint32_t k : triangle) part.add_corner(face_corners[k]);
+            for (const std::uint32_t k : triangle) part.add_corner(face_corners[k], smoothing);
         }
       }
       offset += corners;
+      ++file_face;
     }
   }
 

@@ -26,12 +26,14 @@ struct ObjMeshPart {
 // - uvs: filled when any face has texture coordinates (corners without one get (0, 0)), else empty;
 // - normals: the file's normals, normalised, when every corner has one and none is zero-length;
 //   otherwise left empty for the caller to compute (a mix of given and computed normals would shade
-//   inconsistently).
+//   inconsistently). With `smoothing_groups` (the file has `s` lines), corners without a normal are
+//   shared only within their face's smoothing group, and not at all under "s off", so that computed
+//   smooth normals follow the groups (flat faces under "s off").
 // `face_vertex_counts` is every face's vertex count in file order (ObjTextSummary's, which the
 // caller has checked against the shapes: tinyobjloader's own are 8-bit). `material_of_tinyobj_id[id]`
 // maps tinyobjloader's per-face material id to an index into `material_names` (-1 when unknown).
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
-                                             std::span<const std::uint16_t> face_vertex_counts,
+                                             std::span<const std::uint16_t> face_vertex_counts, bool smoothing_groups,
                                              const std::vector<int>& material_of_tinyobj_id,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape);

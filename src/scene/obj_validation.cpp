@@ -72,6 +72,8 @@ void ObjTextValidator::check_line(std::string_view line, std::size_t line_number
     add_material_use(rest);
   } else if (keyword == "mtllib") {
     add_material_library(rest);
+  } else if (keyword == "s") {
+    summary_.smoothing_groups = true;
   }
 }
 

@@ -30,6 +30,9 @@ struct ObjTextSummary {
   // Each `f` line's vertex count, in file order (tinyobjloader keeps them in 8 bits: a face of 256
   // or more vertices would come back as count % 256).
   std::vector<std::uint16_t> face_vertex_counts;
+  // Any `s` line: the file says which faces are smoothed together ("s off" or "s 0": none), which
+  // decides the normals of faces that have none.
+  bool smoothing_groups = false;
   std::vector<ObjLineReference> material_libraries;  // each `mtllib` line's file name(s), as written
   std::vector<ObjLineReference> materials_used;      // each distinct `usemtl` name, at its first use
 };
