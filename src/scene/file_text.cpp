@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <string_view>
 
 namespace glint {
 
@@ -26,6 +27,8 @@ std::string read_file_text(const std::filesystem::path& path) {
     if (count < sizeof buffer) break;
   }
   if (std::ferror(file.get())) fail("{}: cannot read: {}", path.string(), std::strerror(errno));
+  constexpr std::string_view kUtf8ByteOrderMark = "\xEF\xBB\xBF";
+  if (text.starts_with(kUtf8ByteOrderMark)) text.erase(0, kUtf8ByteOrderMark.size());
   return text;
 }
 
