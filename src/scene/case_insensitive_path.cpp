@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <string>
 #include <system_error>
 
@@ -23,6 +24,22 @@ std::filesystem::path find_entry_ignoring_case(const std::filesystem::path& fold
   return {};
 }
 
+// `start` / the components [first, last), keeping each one that exists as written and matching the
+// others ignoring case; an empty path when one matches nothing.
+std::filesystem::path walk_ignoring_case(std::filesystem::path start, std::filesystem::path::iterator first,
+                                         std::filesystem::path::iterator last) {
+  std::error_code error;
+  for (; first != last; ++first) {
+    std::filesystem::path next = start / *first;
+    if (!std::filesystem::exists(next, error)) {
+      next = find_entry_ignoring_case(start, first->string());
+      if (next.empty()) return {};
+    }
+    start = std::move(next);
+  }
+  return start;
+}
+
 }  // namespace
 
 std::filesystem::path find_file_ignoring_case(const std::filesystem::path& folder, std::string_view name) {
@@ -33,17 +50,15 @@ std::filesystem::path find_file_ignoring_case(const std::filesystem::path& folde
   std::error_code error;
   if (std::filesystem::exists(exact, error)) return exact;
 
-  // Walk the components, keeping each one that exists as written and matching the others.
-  std::filesystem::path resolved = relative.is_absolute() ? relative.root_path() : folder;
-  for (const std::filesystem::path& component : relative.relative_path()) {
-    std::filesystem::path next = resolved / component;
-    if (!std::filesystem::exists(next, error)) {
-      next = find_entry_ignoring_case(resolved, component.string());
-      if (next.empty()) return exact;
-    }
-    resolved = std::move(next);
-  }
-  return resolved;
+  const std::filesystem::path components = relative.relative_path();
+  const std::filesystem::path found = walk_ignoring_case(relative.is_absolute() ? relative.root_path() : folder,
+                                                         components.begin(), components.end());
+  if (!found.empty() || components.empty()) return found.empty() ? exact : found;
+  // A path from the author's machine (C:\Users\...\Textures\wall.jpg, /home/...) or one that climbs
+  // out of the folder: its trailing components beside `folder`, the longest first, down to the name.
+  for (auto first = std::next(components.begin()); first != components.end(); ++first)
+    if (const std::filesystem::path tail = walk_ignoring_case(folder, first, components.end()); !tail.empty()) return tail;
+  return exact;
 }
 
 }  // namespace glint

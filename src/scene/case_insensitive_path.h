@@ -9,7 +9,10 @@ namespace glint {
 
 // `name` relative to `folder` (or as is when absolute), with '\' read as '/'. When that file does not
 // exist, each path component that is missing is matched case-insensitively against its folder's
-// entries. Returns the existing file, or the exact (not found) path when nothing matches.
+// entries; when that finds nothing either, the name's trailing components are tried beside
+// `folder`, longest first, down to the file name alone (a path from the author's machine,
+// "C:\Users\me\model\Textures\wall.jpg", finds Textures/wall.jpg or wall.jpg next to the MTL).
+// Returns the existing file, or the exact (not found) path when nothing matches.
 std::filesystem::path find_file_ignoring_case(const std::filesystem::path& folder, std::string_view name);
 
 }  // namespace glint
