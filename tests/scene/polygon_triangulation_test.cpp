@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -174,6 +175,38 @@ TEST(PolygonTriangulation, AStarShapedFaceOfManyCornersKeepsItsArea) {
     total += signed_area;
   }
   EXPECT_NEAR(total, expected, 1e-4);
+}
+
+TEST(PolygonTriangulation, RandomStarShapedPolygonsKeepTheirAreaAndAnyPolygonEnds) {
+  // Star-shaped polygons (random radii at increasing angles) are simple: their triangles must cover
+  // exactly their area, all wound alike. Random points in any order only have to end, in range.
+  std::mt19937 random(20261126);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 4 + static_cast<std::size_t>(trial % 60);
+    std::vector<vec3> star, scattered;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double angle = 2.0 * std::numbers::pi * (static_cast<double>(i) + 0.8 * unit(random)) / static_cast<double>(n);
+      const float radius = 0.1f + unit(random);
+      star.emplace_back(radius * static_cast<float>(std::cos(angle)), 0.0f, -radius * static_cast<float>(std::sin(angle)));
+      scattered.emplace_back(unit(random), unit(random) * (trial % 3 == 0 ? 0.0f : 1.0f), unit(random));
+    }
+    double expected = 0.0;
+    for (std::size_t i = 0; i < n; ++i) expected += signed_area_xz(vec3(0), star[i], star[(i + 1) % n]);
+    const Triangles triangles = triangulate_polygon(star);
+    ASSERT_EQ(triangles.size(), n - 2) << "trial " << trial;
+    double total = 0.0;
+    for (const auto& t : triangles) {
+      const double signed_area = signed_area_xz(star[t[0]], star[t[1]], star[t[2]]);
+      EXPECT_GE(signed_area, 0.0) << "trial " << trial;
+      total += signed_area;
+    }
+    EXPECT_NEAR(total, expected, 1e-5 * expected) << "trial " << trial;
+    const Triangles any = triangulate_polygon(scattered);
+    EXPECT_LE(any.size(), n - 2) << "trial " << trial;
+    for (const auto& t : any)
+      for (const std::uint32_t k : t) EXPECT_LT(k, n) << "trial " << trial;
+  }
 }
 
 TEST(ObjPolygonFaces, AConcavePolygonAndRelativeIndicesLoadAsDrawn) {
