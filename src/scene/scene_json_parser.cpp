@@ -151,6 +151,12 @@ CameraPathSpec parse_camera(const JsonField& field) {
     path.error("the camera path needs at least 2 points, got {} (a camera that does not move: \"position\" and "
                "\"target\")",
                camera.points.size());
+  // The spline needs two distinct points; said here with the JSON path rather than by the spline.
+  // (Targets may all be one point: the moving camera keeps looking at it.)
+  if (std::all_of(camera.points.begin(), camera.points.end(), [&](const vec3& p) { return p == camera.points.front(); }))
+    path.error("the camera path's {} points are all the same point (a camera that does not move: \"position\" and "
+               "\"target\")",
+               camera.points.size());
   if (auto f = field.find("targets")) {
     camera.targets = f->points();
     if (camera.targets.size() < 2) f->error("camera targets need at least 2 points, got {}", camera.targets.size());
