@@ -107,6 +107,14 @@ def obj_seeds():
     write("obj_mtl", "polygon_and_degenerate", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 1.5 0\n"
           "f 1 2 3 5 4\nf 1 1 2\nf 1 2 3 \\\n 4\n")
     write("obj_mtl", "index_out_of_range", TRI + "f 1 2 9\n")
+    # An L-shaped face from its reflex corner, a relative-index quad, a bridged hole, smoothing groups.
+    write("obj_mtl", "concave_polygons_smoothing",
+          "v 0 0 0\nv 1 0 0\nv 1 0 -3\nv 4 0 -3\nv 4 0 -4\nv 0 0 -4\ns off\nf 3 4 5 6 1 2\n"
+          "v 0 0 -4\nv 4 0 -4\nv 4 2 -4\nv 0 2 -4\ns 1\nf -4 -3 -2 -1\nf 1 2 3 4 8 7 6 5 8 4\n")
+    # Byte order marks and paths from the author's Windows machine.
+    write("obj_mtl", "byte_order_marks_windows_paths",
+          "\ufeffmtllib C:\\model\\f.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nusemtl a\ns 2\n"
+          "f 1/1 2/1 3/1 4/1" + MTL_SEPARATOR + "\ufeffnewmtl a\nmap_Kd D:\\textures\\w.png\n")
     write("obj_mtl", "crlf_comments", "# crlf\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0 1.0\r\nf 1 2 3\r\n")
 
 
