@@ -128,6 +128,22 @@ void check_structure_follows_deformation(const RenderOptions& options, const ren
          options.accel, options.update);
 }
 
+namespace {
+
+// A bare OBJ or glTF file has no mirrors (reflectivity 0 without Pm, illum 3..7 or metallic): its
+// frames look the same in every --reflections mode, which a user asking for reflections should hear.
+void warn_when_nothing_reflects(const RenderOptions& options, const Scene& scene) {
+  if (options.reflections == "off") return;
+  if (std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.reflectivity > 0.0f; }))
+    return;
+  log_warning("{}: no material reflects (every reflectivity is 0), so --reflections {} adds nothing; give materials "
+              "reflectivity in the MTL (Pm, or illum 3 with Ks), glTF (metallic) or a scene file's \"material\": "
+              "{{\"reflectivity\": 0.5}} (docs/scene-format.md)",
+              scene.source, options.reflections);
+}
+
+}  // namespace
+
 std::vector<int> preview_frames(int frame_count) {
   std::vector<int> frames;
   if (frame_count <= kPreviewFrames) {
@@ -392,6 +408,7 @@ int run_render_command(const RenderOptions& options) {
   load.flat_normals = options.flat_normals;
   Scene scene = load_scene(options.scene, load);
   check_structure_follows_deformation(options, settings, scene);
+  warn_when_nothing_reflects(options, scene);
   if (fixed_camera) {
     fixed_camera->fov_y_degrees = scene.walkthrough.camera.fov_y_degrees;
     scene.walkthrough.camera = *fixed_camera;
