@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/untrusted_text.h"
 #include "scene/obj_text_parsing.h"
 #include "scene/specular_roughness.h"
 
@@ -141,7 +142,7 @@ void MtlTextReader::start_material(std::string_view rest) {
   material.line = line_;
   skipping_duplicate_ = !names_.emplace(name).second;
   if (skipping_duplicate_) {
-    log_warning("{}:{}: material '{}' is defined again; the first definition is used", file_, line_, name);
+    log_warning("{}:{}: material '{}' is defined again; the first definition is used", file_, line_, untrusted_text(name));
     duplicate_ = std::move(material);
     duplicate_reflection_ = {};
     return;
@@ -160,8 +161,8 @@ std::optional<vec3> MtlTextReader::read_colour(std::string_view keyword, std::st
   int count = 0;
   for (std::string_view token = take_token(rest); !token.empty(); token = take_token(rest)) {
     const std::optional<float> value = parse_float(token);
-    if (!value) fail_here("'{}': '{}' is not a number", keyword, token);
-    if (!std::isfinite(*value)) fail_here("'{}': '{}' is not a finite number", keyword, token);
+    if (!value) fail_here("'{}': '{}' is not a number", keyword, untrusted_text(token));
+    if (!std::isfinite(*value)) fail_here("'{}': '{}' is not a finite number", keyword, untrusted_text(token));
     if (count == 3) fail_here("'{}' has more than 3 numbers", keyword);
     values[count++] = *value;
   }
@@ -175,8 +176,8 @@ float MtlTextReader::read_scalar(std::string_view keyword, std::string_view rest
   if (keyword == "d" && token == "-halo") token = take_token(rest);  // "d -halo 0.5"
   if (token.empty()) fail_here("'{}' needs a number", keyword);
   const std::optional<float> value = parse_float(token);
-  if (!value) fail_here("'{}': '{}' is not a number", keyword, token);
-  if (!std::isfinite(*value)) fail_here("'{}': '{}' is not a finite number", keyword, token);
+  if (!value) fail_here("'{}': '{}' is not a number", keyword, untrusted_text(token));
+  if (!std::isfinite(*value)) fail_here("'{}': '{}' is not a finite number", keyword, untrusted_text(token));
   if (!take_token(rest).empty()) fail_here("'{}' takes one number", keyword);
   return *value;
 }

@@ -1,6 +1,7 @@
 #include "scene/obj_materials.h"
 
 #include "core/log.h"
+#include "core/untrusted_text.h"
 #include "scene/case_insensitive_path.h"
 #include "scene/file_text.h"
 #include "scene/obj_text_parsing.h"
@@ -29,7 +30,7 @@ void add_library_file(ObjMaterialLibrary& library, const std::filesystem::path& 
   for (MtlMaterial& material : read_mtl_text(text, mtl_path.string())) {
     if (library.find(material.material.name) >= 0) {
       log_warning("{}:{}: material '{}' is already defined by an earlier material library; that one is used",
-                  mtl_path.string(), material.line, material.material.name);
+                  mtl_path.string(), material.line, untrusted_text(material.material.name));
       continue;
     }
     library.materials.push_back(std::move(material));
@@ -48,13 +49,13 @@ void warn_about_undefined_materials(const ObjMaterialLibrary& library, const Obj
     log_warning("{}:{}: {} material name{} ('{}'{}) {} not defined because a material library is missing; "
                 "{} faces use the default material",
                 obj_label, undefined.front()->line, undefined.size(), undefined.size() == 1 ? "" : "s",
-                undefined.front()->name, undefined.size() > 1 ? ", ..." : "", undefined.size() == 1 ? "is" : "are",
+                untrusted_text(undefined.front()->name), undefined.size() > 1 ? ", ..." : "", undefined.size() == 1 ? "is" : "are",
                 undefined.size() == 1 ? "its" : "their");
     return;
   }
   for (const ObjLineReference* use : undefined)
     log_warning("{}:{}: material '{}' is not defined in any material library; its faces use the default material",
-                obj_label, use->line, use->name);
+                obj_label, use->line, untrusted_text(use->name));
 }
 
 }  // namespace
@@ -83,7 +84,7 @@ ObjMaterialLibrary load_obj_material_library(const std::filesystem::path& obj_pa
       std::error_code error;
       if (!std::filesystem::exists(mtl_path, error)) {
         log_warning("{}:{}: material library '{}' not found; its materials fall back to the default material",
-                    obj_path.string(), line.line, mtl_path.string());
+                    obj_path.string(), line.line, untrusted_text(mtl_path.string()));
         a_library_is_missing = true;
         continue;
       }
