@@ -1,5 +1,6 @@
 #include "app/bench/adaptive_experiment.h"
 
+#include "app/bench/backend_availability.h"
 #include "app/bench/bench_environment.h"
 #include "app/bench/bench_summary.h"
 #include "app/bench/experiment_render_options.h"
@@ -9,6 +10,7 @@
 #include "app/frame_loop.h"
 #include "app/output_folder.h"
 #include "app/render_command.h"
+#include "backends/registry.h"
 #include "core/atomic_file.h"
 #include "core/csv_writer.h"
 #include "core/error.h"
@@ -16,9 +18,12 @@
 #include "core/interruption.h"
 #include "core/log.h"
 #include "core/progress_bar.h"
+#include "core/stopwatch.h"
 #include "core/utc_timestamp.h"
 #include "gl/egl_context.h"
 #include "metrics/image_comparison.h"
+#include "render/ray_origin_offset.h"
+#include "render/screen_space_reach.h"
 #include "scene/load_scene.h"
 
 #include <fmt/format.h>
@@ -71,6 +76,59 @@ AdaptivePoint measured_point(const FrameMeasurement& frame) {
 }
 
 double finite_psnr(double psnr) { return std::isfinite(psnr) ? std::min(psnr, kIdenticalPsnr) : kIdenticalPsnr; }
+
+// Screen-space reach (render/screen_space_reach.h) is traced on the host whatever the bench's
+// backend: embree where this binary has it, else glint's cpu backend.
+std::string reach_backend() { return backend_unavailable_reason("embree") ? "cpu" : "embree"; }
+
+// The reach of the frame the loop rendered last, from its G-buffer (mirror rays, whatever the
+// configuration's sampling), untimed. Counts only: the per-pixel classes are dropped.
+render::ScreenSpaceReach measure_reach(FrameLoop& loop, const Scene& scene, const rt::RayTracer& tracer) {
+  const render::RasterPipeline& raster = loop.pipeline().raster();
+  const ImageRgbaF position = raster.read_rgbaf(render::RasterOutput::WorldPosition);
+  const ImageRgbaF normal = raster.read_rgbaf(render::RasterOutput::WorldNormalRoughness);
+  const ImageRgbaF albedo = raster.read_rgbaf(render::RasterOutput::AlbedoReflectivity);
+  const float offset =
+      render::ray_origin_offset(loop.pipeline().settings().ray_tracing.origin_offset_fraction, scene.world_bounds());
+  render::ScreenSpaceReach reach = render::measure_screen_space_reach(scene, tracer, {position, normal, albedo, nullptr},
+                                                                      raster.frame_constants(), offset);
+  reach.classes = {};
+  return reach;
+}
+
+// The reach columns of adaptive.csv and the report, in percent of the reflective pixels.
+struct ReachPercents {
+  double on_screen = 0.0, off_screen = 0.0, occluded = 0.0, miss = 0.0, miss_leaving_view = 0.0, must_trace = 0.0;
+};
+
+ReachPercents reach_percents(const render::ScreenSpaceReach& r) {
+  return {r.percent(r.on_screen), r.percent(r.off_screen),        r.percent(r.occluded),
+          r.percent(r.miss),      r.percent(r.miss_leaving_view), r.percent(r.must_trace())};
+}
+
+nlohmann::json reach_json(int frame, const render::ScreenSpaceReach& r) {
+  const ReachPercents p = reach_percents(r);
+  return {{"frame", frame},
+          {"reflective_pixels", r.reflective},
+          {"on_screen_percent", p.on_screen},
+          {"off_screen_percent", p.off_screen},
+          {"occluded_percent", p.occluded},
+          {"miss_percent", p.miss},
+          {"miss_leaving_view_percent", p.miss_leaving_view},
+          {"must_trace_percent", p.must_trace}};
+}
+
+std::string reach_table(const nlohmann::json& scene) {
+  std::string text = "| frame | reflective px | on screen % | off screen % | occluded % | miss % (leaving the view) | "
+                     "must trace % (off screen + occluded) |\n|---|---|---|---|---|---|---|\n";
+  for (const nlohmann::json& r : scene["screen_space_reach"]["frames"])
+    text += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} ({:.1f}) | {:.1f} |\n", r["frame"].get<int>(),
+                        r["reflective_pixels"].get<std::size_t>(), r["on_screen_percent"].get<double>(),
+                        r["off_screen_percent"].get<double>(), r["occluded_percent"].get<double>(),
+                        r["miss_percent"].get<double>(), r["miss_leaving_view_percent"].get<double>(),
+                        r["must_trace_percent"].get<double>());
+  return text;
+}
 
 std::string markdown_table(const nlohmann::json& scene) {
   std::string text = "| configuration | reflection ms | SSR | ray list | trace | hit shade | classify | rays / "
@@ -125,13 +183,22 @@ int run_adaptive_experiment(const BenchOptions& options) {
 
   CsvWriter csv(out / "adaptive.csv", {"scene", "frame", "config", "reflections", "ray_budget", "reflection_ms",
                                        "ssr_ms", "ray_list_ms", "trace_ms", "hit_shade_ms", "classify_ms", "rays",
-                                       "reflective_pixels", "rays_per_reflective_pixel", "ssim_luma", "psnr_db"});
+                                       "reflective_pixels", "rays_per_reflective_pixel", "ssim_luma", "psnr_db",
+                                       "reach_on_screen_percent", "reach_off_screen_percent", "reach_occluded_percent",
+                                       "reach_miss_percent", "reach_miss_leaving_view_percent",
+                                       "reach_must_trace_percent"});
+  const std::string reach_tracer_name = reach_backend();
   nlohmann::json scene_entries = nlohmann::json::array();
   for (const std::string& name : scene_names) {
     Scene& scene = scenes.at(name);
     const std::vector<int> frames = quality_frames(scene.walkthrough.frame_count);
     std::map<std::string, std::vector<AdaptivePoint>> points;
     std::vector<ImageRgba8> reference;
+    // Screen-space reach: once per frame, from the rt configuration's G-buffer, on the host.
+    const std::unique_ptr<rt::RayTracer> reach_tracer = backends::make_ray_tracer(reach_tracer_name);
+    reach_tracer->build(scene, {});
+    std::vector<render::ScreenSpaceReach> reach;
+    double reach_ms = 0.0;
     for (const AdaptiveConfig& config : configs) {
       const RenderOptions render = render_options(name, config, backend, options);
       FrameLoop loop(scene, render_pipeline_settings(render), {render.width, render.height, false},
@@ -151,16 +218,21 @@ int run_adaptive_experiment(const BenchOptions& options) {
         }
         if (config.label == "rt") {
           reference.push_back(std::move(image));
+          const Stopwatch watch;
+          reach.push_back(measure_reach(loop, scene, *reach_tracer));
+          reach_ms += watch.elapsed_ms();
         } else {
           const metrics::ImageComparison c = metrics::compare_images(image, reference.at(f), config.label, "rt");
           point.ssim = c.ssim.luma;
           point.psnr = finite_psnr(c.error.psnr);
         }
+        const ReachPercents reach_p = reach_percents(reach.at(f));
         csv.add_row({name, frames[f], config.label, config.reflections,
                      config.ray_budget >= 0 ? CsvField(config.ray_budget) : CsvField(""), point.reflection_ms(),
                      point.ssr_ms, point.ray_list_ms, point.trace_ms, point.hit_shade_ms, point.classify_ms,
                      point.rays, point.reflective, point.reflective > 0 ? point.rays / point.reflective : 0.0,
-                     point.ssim, point.psnr});
+                     point.ssim, point.psnr, reach_p.on_screen, reach_p.off_screen, reach_p.occluded, reach_p.miss,
+                     reach_p.miss_leaving_view, reach_p.must_trace});
         points[config.label].push_back(point);
         progress.tick();
       }
@@ -199,7 +271,25 @@ int run_adaptive_experiment(const BenchOptions& options) {
     }
     const std::vector<bool> front = pareto_front(cost, quality);
     for (std::size_t i = 0; i < entries.size(); ++i) entries[i]["pareto"] = static_cast<bool>(front[i]);
-    scene_entries.push_back({{"scene", name}, {"frames", frames}, {"configs", std::move(entries)}});
+    nlohmann::json reach_frames = nlohmann::json::array();
+    for (std::size_t f = 0; f < frames.size(); ++f) reach_frames.push_back(reach_json(frames[f], reach.at(f)));
+    render::ScreenSpaceReach total;  // all frames' pixels together
+    for (const render::ScreenSpaceReach& r : reach) {
+      total.reflective += r.reflective;
+      total.on_screen += r.on_screen;
+      total.off_screen += r.off_screen;
+      total.occluded += r.occluded;
+      total.miss += r.miss;
+      total.miss_leaving_view += r.miss_leaving_view;
+    }
+    nlohmann::json all = reach_json(0, total);
+    all.erase("frame");
+    scene_entries.push_back({{"scene", name},
+                             {"frames", frames},
+                             {"configs", std::move(entries)},
+                             {"screen_space_reach",
+                              {{"backend", reach_tracer_name}, {"ms", reach_ms}, {"frames", std::move(reach_frames)},
+                               {"all_frames", std::move(all)}}}});
   }
   csv.commit();
   progress.finish();
@@ -211,7 +301,7 @@ int run_adaptive_experiment(const BenchOptions& options) {
       {"settings",
        {{"width", options.width}, {"height", options.height}, {"warmup_frames", options.warmup},
         {"backend", backend}, {"gbuffer", options.gbuffer}, {"shadows", options.shadows},
-        {"shadow_map_size", options.shadow_map_size}}},
+        {"shadow_map_size", options.shadow_map_size}, {"reach_backend", reach_tracer_name}}},
       {"scenes", scene_entries}};
   write_summary(out, summary);
   std::string chart_note = options.no_plot ? fmt::format("charts not made (--no-plot); run: python3 {} {}",
@@ -227,16 +317,28 @@ int run_adaptive_experiment(const BenchOptions& options) {
       "Quality (SSIM on luma, PSNR) against rt at the same frame, and the reflection cost: SSR + ray list + "
       "trace + hit shading (+ auto's tile classification), means over the frames. auto-N% is auto with "
       "--ray-budget N% of the image's pixels. Pareto: no other configuration is at most as dear and at least "
-      "as close to rt (SSIM). rt against itself is shown as SSIM 1, PSNR {} dB.\n\n![Pareto](charts/adaptive.png)\n",
+      "as close to rt (SSIM). rt against itself is shown as SSIM 1, PSNR {} dB.\n\n"
+      "Screen-space reach (docs/hybrid.md): each reflective pixel's exact mirror ray, traced on the host with the "
+      "{} backend (whatever the bench's backend) from rt's G-buffer of the frame, untimed; its hit is on screen "
+      "(in the view frustum and the surface the frame shows there), off screen (outside the frustum: beside the "
+      "viewport or behind the camera), occluded (the frame shows another surface there) or a miss. Off screen + "
+      "occluded is a lower bound on the rays any screen-space-first method traces for an exact mirror image; misses "
+      "need none only if SSR reports them as misses (those leaving the view cannot be told from the screen).\n\n"
+      "![Pareto](charts/adaptive.png)\n",
       utc_timestamp(), options.command_line, context.renderer(), backend, options.width, options.height, options.warmup,
-      kMeasuredRepeats, kIdenticalPsnr);
+      kMeasuredRepeats, kIdenticalPsnr, reach_tracer_name);
   for (const nlohmann::json& scene : scene_entries)
-    report += fmt::format("\n## {} (frames {})\n\n{}", scene["scene"].get<std::string>(), scene["frames"].dump(),
-                          markdown_table(scene));
+    report += fmt::format("\n## {} (frames {})\n\n{}\n### Screen-space reach\n\n{}", scene["scene"].get<std::string>(),
+                          scene["frames"].dump(), markdown_table(scene), reach_table(scene));
   if (!chart_note.empty()) report += "\n" + chart_note + "\n";
   write_file_atomically(out / "report.md", report);
   for (const nlohmann::json& scene : scene_entries) {
-    fmt::print("{}\n", scene["scene"].get<std::string>());
+    const nlohmann::json& r = scene["screen_space_reach"]["all_frames"];
+    fmt::print("{}  screen-space reach ({}): on screen {:.1f} %, off screen {:.1f} %, occluded {:.1f} %, miss {:.1f} %: "
+               "must trace >= {:.1f} %\n",
+               scene["scene"].get<std::string>(), scene["screen_space_reach"]["backend"].get<std::string>(),
+               r["on_screen_percent"].get<double>(), r["off_screen_percent"].get<double>(),
+               r["occluded_percent"].get<double>(), r["miss_percent"].get<double>(), r["must_trace_percent"].get<double>());
     for (const nlohmann::json& point : scene["configs"])
       fmt::print("  {:<10} {:9.3f} ms  {:6.3f} rays/px  SSIM {:.4f}  PSNR {:5.1f}{}\n",
                  point["label"].get<std::string>(), point["reflection_ms"].get<double>(),
