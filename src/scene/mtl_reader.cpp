@@ -134,8 +134,8 @@ ReflectionStatements& MtlTextReader::current_reflection(std::string_view keyword
 }
 
 void MtlTextReader::start_material(std::string_view rest) {
-  // Names are single words; tinyobjloader's `usemtl` also reads only the first token.
-  const std::string_view name = take_token(rest);
+  // The whole rest of the line: names may hold blanks ("newmtl 01 - Default"), as `usemtl` reads them.
+  const std::string_view name = obj_text::trim(rest);
   if (name.empty()) fail_here("'newmtl' needs a material name");
   MtlMaterial material;
   material.material.name = std::string(name);

@@ -1,7 +1,8 @@
 // Wavefront OBJ loading in four stages, each in its own file:
 //   1 obj_validation     one fast pass over the text: malformed lines become "file.obj:LINE: ..." errors
 //   2 obj_materials      the MTL libraries (mtl_reader), with warnings for missing files and names
-//   3 tinyobjloader      parsing (faces left as polygons: its triangulation breaks concave ones)
+//   3 tinyobjloader      geometry (faces left as polygons: its triangulation breaks concave ones;
+//                        each face's material comes from the validation pass, names whole)
 //   4 obj_mesh_assembly  meshes per (object, material), polygons split by polygon_triangulation, then
 //                        degenerate removal and normals here
 // How MTL statements map onto glint::Material is documented in mtl_reader.h.
@@ -22,21 +23,15 @@
 namespace glint {
 namespace {
 
-// tinyobjloader is given the material names only (one "newmtl" line each), so that it assigns
-// per-face material ids by name; the values come from our own MTL reader, which checks them and
-// knows which folder each material's textures are relative to.
-std::string names_as_mtl_text(const ObjMaterialLibrary& library) {
-  std::string text;
-  for (const MtlMaterial& material : library.materials) text += "newmtl " + material.material.name + "\n";
-  return text;
-}
-
-// For each tinyobjloader material id, the library index of the material with that name.
-std::vector<int> library_index_of_tinyobj_ids(const std::vector<tinyobj::material_t>& materials,
-                                              const ObjMaterialLibrary& library) {
+// Each face's material as a library index (-1: none or undefined), from the validation pass's
+// `usemtl` names: tinyobjloader's own ids look names up by their first word only.
+std::vector<int> library_index_of_faces(const ObjTextSummary& summary, const ObjMaterialLibrary& library) {
+  std::vector<int> of_used;
+  of_used.reserve(summary.materials_used.size());
+  for (const ObjLineReference& use : summary.materials_used) of_used.push_back(library.find(use.name));
   std::vector<int> result;
-  result.reserve(materials.size());
-  for (const tinyobj::material_t& material : materials) result.push_back(library.find(material.name));
+  result.reserve(summary.face_materials.size());
+  for (const std::int32_t used : summary.face_materials) result.push_back(used >= 0 ? of_used[static_cast<std::size_t>(used)] : -1);
   return result;
 }
 
@@ -101,12 +96,11 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   config.triangulate = false;  // obj_mesh_assembly splits polygons (polygon_triangulation.h)
   config.vertex_color = false;  // glint has no vertex colours; skip filling them
   tinyobj::ObjReader reader;
-  // tinyobjloader reads materials when it meets `mtllib`, and a `usemtl` above that line would find
-  // nothing; our library is already complete, so announce it on a first line of its own. (Later
-  // `mtllib` lines then find the stream used up, which tinyobjloader only notes as a warning.)
-  const std::string tinyobj_text = library.materials.empty() ? text : "mtllib glint-materials\n" + text;
+  // tinyobjloader reads the geometry only: materials come from our own MTL reader (which checks
+  // them and knows which folder each material's textures are relative to) and each face's material
+  // from the validation pass, so it is given no material text (its `usemtl` lookups fail quietly).
   // The validation pass has rejected everything tinyobjloader is known to fail on; this is a backstop.
-  if (!reader.ParseFromString(tinyobj_text, names_as_mtl_text(library), config))
+  if (!reader.ParseFromString(text, std::string(), config))
     fail("{}: {}", file_label,
          reader.Error().empty() ? "tinyobjloader could not parse the file" : untrusted_text(reader.Error()));
   if (!reader.Warning().empty()) log_debug("{}: tinyobjloader: {}", file_label, untrusted_text(reader.Warning()));
@@ -115,7 +109,7 @@ Scene load_obj(const std::filesystem::path& path, const LoadOptions& options) {
   check_face_vertex_counts(reader.GetShapes(), summary, file_label);
   std::vector<ObjMeshPart> parts =
       assemble_obj_meshes(reader.GetAttrib(), reader.GetShapes(), summary.face_vertex_counts, summary.smoothing_groups,
-                          library_index_of_tinyobj_ids(reader.GetMaterials(), library), library.names(), path.stem().string());
+                          library_index_of_faces(summary, library), library.names(), path.stem().string());
   remove_degenerate_geometry(parts, file_label);
   for (ObjMeshPart& part : parts) {
     if (!part.mesh.normals.empty()) continue;

@@ -91,7 +91,7 @@ Mesh finish_mesh(PartBuilder& part, const tinyobj::attrib_t& attrib) {
 
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
                                              std::span<const std::uint16_t> face_vertex_counts, bool smoothing_groups,
-                                             const std::vector<int>& material_of_tinyobj_id,
+                                             const std::vector<int>& face_materials,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape) {
   std::vector<PartBuilder> parts;
@@ -108,9 +108,7 @@ std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, co
       // Faces come untriangulated (tinyobjloader's triangulation breaks concave polygons):
       // polygons are split here, in their own plane.
       if (corners >= 3) {
-        const int id = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
-        const int material =
-            id >= 0 && static_cast<std::size_t>(id) < material_of_tinyobj_id.size() ? material_of_tinyobj_id[id] : -1;
+        const int material = face_materials[file_face];
         const auto [it, inserted] = part_of_key.try_emplace({shape_name, material}, parts.size());
         if (inserted) parts.push_back(PartBuilder{shape_name, material, {}, {}, {}});
         PartBuilder& part = parts[it->second];

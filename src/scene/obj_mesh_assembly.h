@@ -30,11 +30,11 @@ struct ObjMeshPart {
 //   shared only within their face's smoothing group, and not at all under "s off", so that computed
 //   smooth normals follow the groups (flat faces under "s off").
 // `face_vertex_counts` is every face's vertex count in file order (ObjTextSummary's, which the
-// caller has checked against the shapes: tinyobjloader's own are 8-bit). `material_of_tinyobj_id[id]`
-// maps tinyobjloader's per-face material id to an index into `material_names` (-1 when unknown).
+// caller has checked against the shapes: tinyobjloader's own are 8-bit). `face_materials` is every
+// face's material in file order, an index into `material_names` (-1: none).
 std::vector<ObjMeshPart> assemble_obj_meshes(const tinyobj::attrib_t& attrib, const std::vector<tinyobj::shape_t>& shapes,
                                              std::span<const std::uint16_t> face_vertex_counts, bool smoothing_groups,
-                                             const std::vector<int>& material_of_tinyobj_id,
+                                             const std::vector<int>& face_materials,
                                              const std::vector<std::string>& material_names,
                                              std::string_view unnamed_shape);
 

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace glint {
 namespace {
@@ -44,7 +44,8 @@ private:
   std::string_view file_;
   std::size_t line_ = 0;
   ObjTextSummary summary_;
-  std::unordered_set<std::string> used_names_;
+  std::unordered_map<std::string, std::int32_t> used_names_;  // name -> index into materials_used
+  std::int32_t current_material_ = -1;
 };
 
 void ObjTextValidator::check_line(std::string_view line, std::size_t line_number) {
@@ -64,6 +65,7 @@ void ObjTextValidator::check_line(std::string_view line, std::size_t line_number
     ++summary_.normal_count;
   } else if (keyword == "f") {
     summary_.face_vertex_counts.push_back(static_cast<std::uint16_t>(check_element_list(keyword, rest, 3)));
+    summary_.face_materials.push_back(current_material_);
   } else if (keyword == "l") {
     check_element_list(keyword, rest, 2);
   } else if (keyword == "p") {
@@ -145,10 +147,12 @@ void ObjTextValidator::check_index(std::string_view index_text, std::size_t defi
 }
 
 void ObjTextValidator::add_material_use(std::string_view rest) {
-  // Material names are single words; tinyobjloader also reads only the first token.
-  const std::string_view name = take_token(rest);
+  // The whole rest of the line, as the MTL reader reads `newmtl`: names may hold blanks.
+  const std::string_view name = obj_text::trim(rest);
   if (name.empty()) fail_here("'usemtl' needs a material name");
-  if (used_names_.emplace(name).second) summary_.materials_used.push_back({std::string(name), line_});
+  const auto [it, inserted] = used_names_.try_emplace(std::string(name), static_cast<std::int32_t>(summary_.materials_used.size()));
+  if (inserted) summary_.materials_used.push_back({std::string(name), line_});
+  current_material_ = it->second;
 }
 
 void ObjTextValidator::add_material_library(std::string_view rest) {

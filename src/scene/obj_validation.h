@@ -35,6 +35,10 @@ struct ObjTextSummary {
   bool smoothing_groups = false;
   std::vector<ObjLineReference> material_libraries;  // each `mtllib` line's file name(s), as written
   std::vector<ObjLineReference> materials_used;      // each distinct `usemtl` name, at its first use
+  // Per `f` line, in file order: the index into materials_used of the `usemtl` in force, -1 before
+  // any. Names are the whole rest of the line ("usemtl 01 - Default"), which tinyobjloader's
+  // first-word lookup would merge, so faces get their materials from here.
+  std::vector<std::int32_t> face_materials;
 };
 
 // Checks, line by line: `v` has 3 to 7 numbers (x y z [w] or x y z r g b) and a finite position;
