@@ -96,7 +96,7 @@ double ScreenSpaceReach::percent(std::size_t count) const {
 }
 
 ScreenSpaceReach measure_screen_space_reach(const Scene& scene, const rt::RayTracer& tracer, const ReachGBuffer& g,
-                                            const FrameConstants& frame, float origin_offset) {
+                                            const FrameConstants& frame, float origin_offset, float fade_end) {
   const int width = g.world_position.width, height = g.world_position.height;
   const auto same_size = [&](const ImageRgbaF& image) { return image.width == width && image.height == height; };
   if (!same_size(g.world_normal) || !same_size(g.albedo_reflectivity) ||
@@ -128,6 +128,8 @@ ScreenSpaceReach measure_screen_space_reach(const Scene& scene, const rt::RayTra
   for (std::size_t r = 0; r < rays.size(); ++r) {
     const ReachClass c = classify(scene, g, frame, rays[r], hits[r]);
     reach.classes[ray_pixels[r]] = c;
+    const bool shown = !(fade_end > 0.0f) || hits[r].t < fade_end;  // t: world distance (unit direction)
+    if ((c == ReachClass::off_screen || c == ReachClass::occluded) && shown) ++reach.must_trace_within_fade;
     switch (c) {
       case ReachClass::on_screen: ++reach.on_screen; break;
       case ReachClass::off_screen: ++reach.off_screen; break;

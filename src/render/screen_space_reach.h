@@ -12,7 +12,9 @@
 //   miss        nothing hit (the sky); miss_leaving_view counts those whose direction leaves the
 //               view, so no screen-space march can prove the miss.
 // off_screen + occluded is a lower bound on the rays a screen-space-first method must trace for an
-// exact mirror image (misses need none only if it reports a miss correctly).
+// exact mirror image (misses need none only if it reports a miss correctly). Of those, the ones whose
+// hit lies nearer than the resolve's fade end are the ones the final image shows (the others fade to
+// nothing, so any answer at least that far away gives the same picture).
 //
 // "Shows that surface": the visibility id there equals the hit's {instance, triangle} (when the
 // ids are given), or, in the pixel under the hit or one of its 8 neighbours, the surface's tangent
@@ -54,6 +56,7 @@ struct ScreenSpaceReach {
   std::size_t occluded = 0;
   std::size_t miss = 0;
   std::size_t miss_leaving_view = 0;  // of miss
+  std::size_t must_trace_within_fade = 0;  // of must_trace(): hits nearer than fade_end (all without a fade)
   std::vector<ReachClass> classes;    // per pixel, top row first
 
   // The lower bound: reflective pixels no screen-space method can answer from this frame.
@@ -65,10 +68,11 @@ struct ScreenSpaceReach {
 // Traces the mirror ray of every reflective pixel with `tracer` (built over `scene` as it is this
 // frame) from the G-buffer position moved `origin_offset` along the normal turned towards the camera
 // (ray_origin_offset.h), and classifies it against `frame`'s camera (camera_position,
-// relative_view_projection), which maps onto the images' size. glint::Error when the images differ
+// relative_view_projection), which maps onto the images' size. `fade_end`: the resolve's distance
+// fade end in world units (resolve_settings.h); <= 0: no fade. glint::Error when the images differ
 // in size.
 ScreenSpaceReach measure_screen_space_reach(const Scene& scene, const rt::RayTracer& tracer,
                                             const ReachGBuffer& gbuffer, const FrameConstants& frame,
-                                            float origin_offset);
+                                            float origin_offset, float fade_end = 0.0f);
 
 }  // namespace glint::render

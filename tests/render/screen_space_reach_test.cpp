@@ -160,6 +160,13 @@ TEST(ScreenSpaceReach, AMirrorReflectingOnlyAWallBehindTheCameraIsAllOffScreen) 
   EXPECT_EQ(reach.must_trace(), reach.reflective);
   EXPECT_DOUBLE_EQ(reach.percent(reach.off_screen), 100.0);
   EXPECT_EQ(disagreements(reach.classes, brute_force(s)), 0u);
+  // The wall behind the camera is 16 to 17 units from the mirror: beyond a fade ending at 10 it shows
+  // in no picture, before one ending at 100 in every one.
+  EXPECT_EQ(reach.must_trace_within_fade, reach.reflective);  // no fade
+  const ReachGBuffer g = s.gbuffer.view(false);
+  EXPECT_EQ(measure_screen_space_reach(s.scene, *s.tracer, g, s.frame, s.offset, 10.0f).must_trace_within_fade, 0u);
+  EXPECT_EQ(measure_screen_space_reach(s.scene, *s.tracer, g, s.frame, s.offset, 100.0f).must_trace_within_fade,
+            reach.reflective);
 }
 
 TEST(ScreenSpaceReach, AMirrorFloorBeforeAWallInViewReachesTheWallOnScreen) {

@@ -23,6 +23,7 @@
 #include "gl/egl_context.h"
 #include "metrics/image_comparison.h"
 #include "render/ray_origin_offset.h"
+#include "render/scene_reflection_fade.h"
 #include "render/screen_space_reach.h"
 #include "scene/load_scene.h"
 
@@ -90,8 +91,9 @@ render::ScreenSpaceReach measure_reach(FrameLoop& loop, const Scene& scene, cons
   const ImageRgbaF albedo = raster.read_rgbaf(render::RasterOutput::AlbedoReflectivity);
   const float offset =
       render::ray_origin_offset(loop.pipeline().settings().ray_tracing.origin_offset_fraction, scene.world_bounds());
+  const float fade_end = render::with_scene_fade(loop.pipeline().settings().resolve, scene).fade_end;
   render::ScreenSpaceReach reach = render::measure_screen_space_reach(scene, tracer, {position, normal, albedo, nullptr},
-                                                                      raster.frame_constants(), offset);
+                                                                      raster.frame_constants(), offset, fade_end);
   reach.classes = {};
   return reach;
 }
@@ -99,11 +101,13 @@ render::ScreenSpaceReach measure_reach(FrameLoop& loop, const Scene& scene, cons
 // The reach columns of adaptive.csv and the report, in percent of the reflective pixels.
 struct ReachPercents {
   double on_screen = 0.0, off_screen = 0.0, occluded = 0.0, miss = 0.0, miss_leaving_view = 0.0, must_trace = 0.0;
+  double must_trace_within_fade = 0.0;
 };
 
 ReachPercents reach_percents(const render::ScreenSpaceReach& r) {
   return {r.percent(r.on_screen), r.percent(r.off_screen),        r.percent(r.occluded),
-          r.percent(r.miss),      r.percent(r.miss_leaving_view), r.percent(r.must_trace())};
+          r.percent(r.miss),      r.percent(r.miss_leaving_view), r.percent(r.must_trace()),
+          r.percent(r.must_trace_within_fade)};
 }
 
 nlohmann::json reach_json(int frame, const render::ScreenSpaceReach& r) {
@@ -115,18 +119,20 @@ nlohmann::json reach_json(int frame, const render::ScreenSpaceReach& r) {
           {"occluded_percent", p.occluded},
           {"miss_percent", p.miss},
           {"miss_leaving_view_percent", p.miss_leaving_view},
-          {"must_trace_percent", p.must_trace}};
+          {"must_trace_percent", p.must_trace},
+          {"must_trace_within_fade_percent", p.must_trace_within_fade}};
 }
 
 std::string reach_table(const nlohmann::json& scene) {
   std::string text = "| frame | reflective px | on screen % | off screen % | occluded % | miss % (leaving the view) | "
-                     "must trace % (off screen + occluded) |\n|---|---|---|---|---|---|---|\n";
+                     "must trace % (off screen + occluded) | of it nearer than the fade end % |\n"
+                     "|---|---|---|---|---|---|---|---|\n";
   for (const nlohmann::json& r : scene["screen_space_reach"]["frames"])
-    text += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} ({:.1f}) | {:.1f} |\n", r["frame"].get<int>(),
+    text += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} ({:.1f}) | {:.1f} | {:.1f} |\n", r["frame"].get<int>(),
                         r["reflective_pixels"].get<std::size_t>(), r["on_screen_percent"].get<double>(),
                         r["off_screen_percent"].get<double>(), r["occluded_percent"].get<double>(),
                         r["miss_percent"].get<double>(), r["miss_leaving_view_percent"].get<double>(),
-                        r["must_trace_percent"].get<double>());
+                        r["must_trace_percent"].get<double>(), r["must_trace_within_fade_percent"].get<double>());
   return text;
 }
 
@@ -186,7 +192,7 @@ int run_adaptive_experiment(const BenchOptions& options) {
                                        "reflective_pixels", "rays_per_reflective_pixel", "ssim_luma", "psnr_db",
                                        "reach_on_screen_percent", "reach_off_screen_percent", "reach_occluded_percent",
                                        "reach_miss_percent", "reach_miss_leaving_view_percent",
-                                       "reach_must_trace_percent"});
+                                       "reach_must_trace_percent", "reach_must_trace_within_fade_percent"});
   const std::string reach_tracer_name = reach_backend();
   nlohmann::json scene_entries = nlohmann::json::array();
   for (const std::string& name : scene_names) {
@@ -232,7 +238,7 @@ int run_adaptive_experiment(const BenchOptions& options) {
                      point.ssr_ms, point.ray_list_ms, point.trace_ms, point.hit_shade_ms, point.classify_ms,
                      point.rays, point.reflective, point.reflective > 0 ? point.rays / point.reflective : 0.0,
                      point.ssim, point.psnr, reach_p.on_screen, reach_p.off_screen, reach_p.occluded, reach_p.miss,
-                     reach_p.miss_leaving_view, reach_p.must_trace});
+                     reach_p.miss_leaving_view, reach_p.must_trace, reach_p.must_trace_within_fade});
         points[config.label].push_back(point);
         progress.tick();
       }
@@ -281,6 +287,7 @@ int run_adaptive_experiment(const BenchOptions& options) {
       total.occluded += r.occluded;
       total.miss += r.miss;
       total.miss_leaving_view += r.miss_leaving_view;
+      total.must_trace_within_fade += r.must_trace_within_fade;
     }
     nlohmann::json all = reach_json(0, total);
     all.erase("frame");
@@ -323,7 +330,9 @@ int run_adaptive_experiment(const BenchOptions& options) {
       "(in the view frustum and the surface the frame shows there), off screen (outside the frustum: beside the "
       "viewport or behind the camera), occluded (the frame shows another surface there) or a miss. Off screen + "
       "occluded is a lower bound on the rays any screen-space-first method traces for an exact mirror image; misses "
-      "need none only if SSR reports them as misses (those leaving the view cannot be told from the screen).\n\n"
+      "need none only if SSR reports them as misses (those leaving the view cannot be told from the screen). The last "
+      "column counts the must-trace hits nearer than the resolve's fade end: the farther ones fade to nothing in the "
+      "picture.\n\n"
       "![Pareto](charts/adaptive.png)\n",
       utc_timestamp(), options.command_line, context.renderer(), backend, options.width, options.height, options.warmup,
       kMeasuredRepeats, kIdenticalPsnr, reach_tracer_name);
