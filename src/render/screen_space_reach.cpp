@@ -1,6 +1,7 @@
 #include "render/screen_space_reach.h"
 
 #include "core/error.h"
+#include "render/glossy_sampling.h"
 
 #include <glm/geometric.hpp>
 
@@ -110,12 +111,11 @@ ScreenSpaceReach measure_screen_space_reach(const Scene& scene, const rt::RayTra
   for (std::size_t i = 0; i < g.world_position.pixels.size(); ++i) {
     if (!reflective_at(g, i)) continue;
     const vec3 position = vec3(g.world_position.pixels[i]);
-    vec3 n = glm::normalize(vec3(g.world_normal.pixels[i]));
-    const vec3 v = glm::normalize(camera - position);
-    if (glm::dot(n, v) < 0.0f) n = -n;
+    const vec3 incident = glm::normalize(position - camera);
+    const vec3 n = glossy::facing_normal(incident, glm::normalize(vec3(g.world_normal.pixels[i])));
     accel::Ray ray;
     ray.origin = position + origin_offset * n;
-    ray.direction = glm::normalize(glm::reflect(-v, n));
+    ray.direction = glossy::reflection_direction(incident, n, 0.0f, vec2(0.0f));  // the mirror
     rays.push_back(ray);
     ray_pixels.push_back(i);
   }
