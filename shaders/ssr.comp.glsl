@@ -81,6 +81,37 @@ float neighbour_plane_distance(ivec2 pixel, vec3 p, vec3 n) {
   return largest;
 }
 
+// The lit colour where the ray met the surface: bilinear between the pixel centres around `point`
+// (inside `hit_pixel`), over the neighbours on the hit's surface only: a neighbour off the hit's
+// plane by more than kSamePlane footprints (the hit pixel's world size), or facing more than
+// acos(kSameNormal) away, is another surface. The hit pixel's own colour alone was the reflection of
+// the pixel centre, up to half a pixel from the hit: textured walls' reflections came out shifted
+// (docs/ssr.md "Where the hit is").
+const float kSamePlane = 0.5;
+const float kSameNormal = 0.9;
+vec3 lit_at(vec2 point, ivec2 hit_pixel, vec3 hit_position, vec3 hit_normal, float footprint) {
+  const vec2 q = clamp(point, vec2(hit_pixel), vec2(hit_pixel + 1)) - 0.5;
+  const ivec2 base = ivec2(floor(q));
+  const vec2 f = q - vec2(base);
+  vec3 sum = vec3(0.0);
+  float total = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const ivec2 corner = ivec2(i & 1, i >> 1);
+    const ivec2 texel = clamp(base + corner, ivec2(0), screen_size - 1);
+    const float w = mix(1.0 - f.x, f.x, float(corner.x)) * mix(1.0 - f.y, f.y, float(corner.y));
+    const vec4 position = imageLoad(world_position, texel);
+    const bool same_surface = texel == hit_pixel ||
+                              (position.w != 0.0 &&
+                               abs(dot(position.xyz - hit_position, hit_normal)) <= kSamePlane * footprint &&
+                               dot(imageLoad(world_normal, texel).xyz, hit_normal) > kSameNormal);
+    if (w > 0.0 && same_surface) {
+      sum += w * imageLoad(lit, texel).rgb;
+      total += w;
+    }
+  }
+  return total > 0.0 ? sum / total : imageLoad(lit, hit_pixel).rgb;
+}
+
 // Traces one reflective pixel; writes the reflection it trusts into `result`.
 uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   result = vec4(0.0);
@@ -125,6 +156,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   const int top_level = pyramid_levels - 1;
   bool found = false;
   ivec2 hit_pixel = pixel;
+  vec2 hit_point = vec2(pixel) + 0.5;
   float hit_gap = 0.0;  // how far behind the hit pixel's surface the ray passed (view depth)
   for (int i = 0; i < max_steps; ++i) {
     if (t >= t_end) return kFailed;  // off screen, or the end of the clipped ray
@@ -176,6 +208,10 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
     found = true;
     hit_pixel = at;
     hit_gap = max(min(behind_a, behind_b), 0.0);  // 0 where the ray crosses the surface inside the pixel
+    // Where the ray meets the pixel's plane inside the pixel (where it enters, if behind it already).
+    const bool crosses = (behind_a < 0.0) != (behind_b < 0.0);
+    const float cross_at = crosses ? clamp(behind_a / (behind_a - behind_b), 0.0, 1.0) : 0.0;
+    hit_point = line.p0 + line.dp * mix(t, t_exit, cross_at);
     break;
   }
   if (!found) return kFailed;  // out of steps
@@ -198,7 +234,8 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   if (confidence < confidence_threshold) return kFailed;
 
   const float weight = reflection_weight(view_dir, normal_ws, glossy_roughness(roughness), ray_ws);  // 1 for a mirror
-  result = vec4(weight * imageLoad(lit, hit_pixel).rgb, length(hit_position.xyz - origin_ws));
+  result = vec4(weight * lit_at(hit_point, hit_pixel, hit_position.xyz, hit_normal, footprint),
+                length(hit_position.xyz - origin_ws));
   return kHit;
 }
 

@@ -122,7 +122,7 @@ CpuGBuffer rasterize(const SyntheticScene& scene, const FrameConstants& constant
           glm::u8vec4(to_byte(quad.albedo.x), to_byte(quad.albedo.y), to_byte(quad.albedo.z), to_byte(quad.reflectivity));
       g.world_position[i] = vec4(hit->position, 1.0f);
       g.world_normal[i] = vec4(quad.normal, 0.0f);
-      g.lit[i] = vec4(quad.lit, 1.0f);
+      g.lit[i] = vec4(lit_at(quad, hit->position), 1.0f);
       g.quad[i] = hit->quad;
       g.t[i] = hit->t;
     }

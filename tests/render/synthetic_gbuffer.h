@@ -23,6 +23,7 @@ struct SyntheticQuad {
   vec3 max{0.0f};
   vec3 normal{0.0f, 1.0f, 0.0f};
   vec3 lit{0.0f};     // radiance the lighting pass would have produced
+  vec3 lit_per_x{0.0f};  // its change per world unit along x (a shading gradient across the quad)
   vec3 albedo{0.5f};
   float reflectivity = 0.0f;
   int object = 0;     // quads of one box share an object id
@@ -42,6 +43,9 @@ struct SyntheticScene {
 private:
   int next_object_ = 0;
 };
+
+// The lit colour of `quad` at world point `p` (lit + lit_per_x * p.x).
+inline vec3 lit_at(const SyntheticQuad& quad, vec3 p) { return quad.lit + quad.lit_per_x * p.x; }
 
 struct SurfaceHit {
   float t = 0.0f;
