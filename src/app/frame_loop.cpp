@@ -47,7 +47,7 @@ FrameLoop::FrameLoop(Scene& scene, const render::FramePipelineSettings& settings
       timer_(pass_timing),
       serialized_(options.serialized),
       keep_in_flight_(std::min(options.keep_in_flight, kFramesInFlight - 1)) {
-  if (deformers_ && options.deform_on_gpu) gpu_deformer_ = render::make_gpu_deformer(*deformers_, pipeline_);
+  if (deformers_ && options.deform_on_gpu) gpu_deformer_ = std::make_unique<render::GpuDeformation>(*deformers_, pipeline_);
   pipeline_.set_final_capture(options.capture_final);
   pipeline_.set_linear_capture(options.capture_linear);
   if (options.profile_scopes) profiler_.emplace(pass_timing);
@@ -66,14 +66,15 @@ FrameLoop::~FrameLoop() {
     if (frame.done != nullptr) glDeleteSync(frame.done);
 }
 
-// On the CPU the new vertices are copied to GL and the tracer; with a GPU deformer nothing is copied
-// and the kernels' time is read when the frame is done (read_cuda_times).
+// On the CPU the new vertices are copied to GL and the tracer; on the GPU GL and CUDA pose their own
+// copies, nothing is copied, and the CUDA kernels' time is read when the frame is done
+// (read_cuda_times; GL's deformation is timed by its "deform" scope, --profile-scopes).
 FrameLoop::DeformTimes FrameLoop::deform(int frame) {
   if (!deformers_) return {};
   DeformTimes times;
   if (gpu_deformer_) {
     const std::vector<std::uint32_t> dirty = gpu_deformer_->apply(frame);
-    times.deform_ticket = gpu_deformer_->last_apply();
+    times.deform_ticket = gpu_deformer_->last_cuda_apply();
     times.accel_update_ms = pipeline_.update_ray_tracer_on_device(dirty);
     if (rt::DeviceTracing* device = pipeline_.device_tracing()) times.update_ticket = device->last_update();
     return times;
@@ -89,9 +90,11 @@ FrameLoop::DeformTimes FrameLoop::deform(int frame) {
 }
 
 void FrameLoop::read_cuda_times(DeformTimes& times) {
-  // The frame's fence passed, and the frame's GL work came after its CUDA work: nothing waits here.
+  // The frame's fence passed. Its GL work came after its CUDA work wherever the frame traced rays on
+  // the tracer's stream (the deformer and the update come before the traces there), so nothing waits
+  // then; a frame without a CUDA trace may wait here for the deformer's and the update's kernels.
   // Each time is read once (the read frees its timing; the tickets are dropped).
-  if (times.deform_ticket) times.deform_ms = gpu_deformer_->apply_ms(*times.deform_ticket, /*wait=*/true).value();
+  if (times.deform_ticket) times.deform_ms = gpu_deformer_->cuda_apply_ms(*times.deform_ticket, /*wait=*/true).value();
   if (times.update_ticket)
     times.accel_update_ms = pipeline_.device_tracing()->gpu_ms(*times.update_ticket, /*wait=*/true).value();
   times.deform_ticket.reset();

@@ -35,8 +35,8 @@
 
 namespace glint {
 
-namespace cuda {
-class GpuSceneDeformer;
+namespace render {
+class GpuDeformation;
 }
 
 // What one frame measured.
@@ -70,7 +70,7 @@ struct FrameLoopOptions {
   int width = 1280;
   int height = 720;
   bool deform = true;          // animate the scene's deformable meshes (when it has any)
-  bool deform_on_gpu = false;  // with CUDA kernels (needs a CUDA GPU; see render/gpu_deformation.h)
+  bool deform_on_gpu = false;  // GL compute and CUDA kernels (needs a CUDA GPU; see render/gpu_deformation.h)
   // Read every frame's final image back (a pixel-pack buffer per frame in flight, no stall) into
   // FrameMeasurement::final_image.
   bool capture_final = false;
@@ -152,7 +152,7 @@ private:
   WalkthroughAnimation animation_;
   std::optional<SceneDeformers> deformers_;
   render::FramePipeline pipeline_;
-  std::unique_ptr<cuda::GpuSceneDeformer> gpu_deformer_;
+  std::unique_ptr<render::GpuDeformation> gpu_deformer_;
   GpuTimer timer_;
   std::optional<ScopeProfiler> profiler_;  // with FrameLoopOptions::profile_scopes
   bool serialized_ = false;

@@ -2,7 +2,6 @@
 
 #include "cuda/cuda_check.h"
 #include "cuda/device_query.h"
-#include "cuda/gl_buffer_interop.h"
 #include "cuda/gpu_sine_deformer.h"
 #include "cuda/cuda_span.h"
 #include "cuda/gpu_span_pool.h"
@@ -15,42 +14,20 @@ namespace glint::cuda {
 struct GpuSceneDeformer::State {
   const SceneDeformers* deformers = nullptr;
   std::vector<GpuSineDeformer> meshes;  // parallel to deformers->meshes()
-  std::vector<uint32_t> base_vertex;    // per scene mesh
-  std::optional<GlBufferInterop> gl_vertices;
   rt::DeviceTracing* tracer = nullptr;
-  cudaStream_t stream = nullptr;
-  bool owns_stream = false;
+  cudaStream_t stream = nullptr;  // the tracer's
   GpuSpanPool<CudaSpan> timed{"GPU deformer"};  // one span per apply, read once by the frame loop
   std::optional<std::uint64_t> last_apply;
-
-  ~State() {
-    if (owns_stream && stream) cudaStreamDestroy(stream);
-  }
 };
 
-GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers& deformers, std::uint32_t gl_vertex_buffer,
-                                   std::vector<std::uint32_t> base_vertex, rt::DeviceTracing* tracer)
+GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers& deformers, rt::DeviceTracing& tracer)
     : state_(std::make_unique<State>()) {
   require_cuda_gpu("--deform-on gpu");
   State& s = *state_;
   s.deformers = &deformers;
-  s.base_vertex = std::move(base_vertex);
-  s.tracer = tracer;
-  for (std::size_t k = 0; k < deformers.meshes().size(); ++k) {
-    if (gl_vertex_buffer != 0 && deformers.meshes()[k] >= s.base_vertex.size())
-      fail_message("GPU deformer: no GL vertex range for mesh " + std::to_string(deformers.meshes()[k]));
-    s.meshes.emplace_back(deformers.deformers()[k]);
-  }
-  if (gl_vertex_buffer != 0) {
-    const InteropBuffer shared[] = {{gl_vertex_buffer, InteropAccess::read_write}};
-    s.gl_vertices.emplace(shared);
-  }
-  if (tracer) {
-    s.stream = static_cast<cudaStream_t>(tracer->stream());
-  } else {
-    GLINT_CUDA_CHECK(cudaStreamCreateWithFlags(&s.stream, cudaStreamNonBlocking));
-    s.owns_stream = true;
-  }
+  for (const SineDeformer& deformer : deformers.deformers()) s.meshes.emplace_back(deformer);
+  s.tracer = &tracer;
+  s.stream = static_cast<cudaStream_t>(tracer.stream());
 }
 
 GpuSceneDeformer::~GpuSceneDeformer() = default;
@@ -58,15 +35,9 @@ GpuSceneDeformer::~GpuSceneDeformer() = default;
 std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
   State& s = *state_;
   const float time_seconds = s.deformers->time_at(frame);
-  std::optional<ScopedInteropMap> mapped;
-  if (s.gl_vertices) mapped.emplace(*s.gl_vertices, s.stream);
-  auto* gl_vertices = mapped ? mapped->pointer<DeformedGlVertex>(0) : nullptr;
   const std::uint64_t ticket = start_span(s.timed, s.stream);
-  for (std::size_t k = 0; k < s.meshes.size(); ++k) {
-    const uint32_t mesh = s.deformers->meshes()[k];
-    vec3* positions = s.tracer ? s.tracer->device_positions(mesh) : nullptr;
-    s.meshes[k].apply(time_seconds, positions, gl_vertices ? gl_vertices + s.base_vertex[mesh] : nullptr, s.stream);
-  }
+  for (std::size_t k = 0; k < s.meshes.size(); ++k)
+    s.meshes[k].apply(time_seconds, s.tracer->device_positions(s.deformers->meshes()[k]), nullptr, s.stream);
   stop_span(s.timed, ticket, s.stream);
   s.last_apply = ticket;
   return s.deformers->meshes();

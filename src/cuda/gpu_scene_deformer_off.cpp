@@ -8,7 +8,7 @@ namespace glint::cuda {
 
 struct GpuSceneDeformer::State {};
 
-GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers&, std::uint32_t, std::vector<std::uint32_t>, rt::DeviceTracing*) {
+GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers&, rt::DeviceTracing&) {
   fail("--deform-on gpu: glint was built without CUDA (GLINT_CUDA=OFF or no nvcc at configure time)");
 }
 GpuSceneDeformer::~GpuSceneDeformer() = default;

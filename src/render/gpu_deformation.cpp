@@ -2,24 +2,41 @@
 
 #include "core/error.h"
 
-#include <cstddef>
-
 namespace glint::render {
+namespace {
 
-static_assert(sizeof(GpuVertex) == sizeof(cuda::DeformedGlVertex) &&
-                  offsetof(GpuVertex, normal_v) == offsetof(cuda::DeformedGlVertex, normal_v),
-              "the GPU deformer writes GpuVertex records");
-
-std::unique_ptr<cuda::GpuSceneDeformer> make_gpu_deformer(const SceneDeformers& deformers, FramePipeline& pipeline) {
+// The CUDA half poses only the tracer's device positions (no GL vertex buffer: GL poses its own).
+std::unique_ptr<cuda::GpuSceneDeformer> tracer_deformer(const SceneDeformers& deformers, FramePipeline& pipeline) {
   const rt::RayTracer* tracer = pipeline.ray_tracer();
-  if (tracer != nullptr && pipeline.device_tracing() == nullptr)
+  if (tracer == nullptr) return nullptr;
+  if (pipeline.device_tracing() == nullptr)
     fail("--deform-on gpu needs a GPU ray tracer (--backend cuda): the {} backend builds from host vertices, which "
          "the GPU deformer does not update; use --deform-on cpu",
          tracer->name());
-  std::vector<std::uint32_t> base_vertex;
-  for (const GpuMeshRange& range : pipeline.raster().gpu_scene().mesh_ranges()) base_vertex.push_back(range.base_vertex);
-  return std::make_unique<cuda::GpuSceneDeformer>(deformers, pipeline.raster().gpu_scene().vertex_buffer(),
-                                                  std::move(base_vertex), pipeline.device_tracing());
+  return std::make_unique<cuda::GpuSceneDeformer>(deformers, *pipeline.device_tracing());
+}
+
+}  // namespace
+
+GpuDeformation::GpuDeformation(const SceneDeformers& deformers, FramePipeline& pipeline)
+    : gl_(deformers, pipeline.raster().gpu_scene()), cuda_(tracer_deformer(deformers, pipeline)) {}
+
+GpuDeformation::~GpuDeformation() = default;
+
+std::vector<std::uint32_t> GpuDeformation::apply(int frame) {
+  gl_.apply(frame);
+  if (cuda_) return cuda_->apply(frame);
+  return gl_.meshes();
+}
+
+std::optional<std::uint64_t> GpuDeformation::last_cuda_apply() const {
+  if (!cuda_) return std::nullopt;
+  return cuda_->last_apply();
+}
+
+std::optional<double> GpuDeformation::cuda_apply_ms(std::uint64_t ticket, bool wait) {
+  if (!cuda_) fail("GPU deformation: no CUDA deformer to time");
+  return cuda_->apply_ms(ticket, wait);
 }
 
 }  // namespace glint::render

@@ -1,17 +1,41 @@
 #pragma once
-// --deform-on gpu: the scene's sine deformers run as CUDA kernels that write the frame pipeline's GL
-// vertex buffer and, with a GPU ray tracer, its device positions (cuda/gpu_scene_deformer.h).
+// --deform-on gpu: the scene's sine deformers run on the GPU, on both sides of the frame and with no
+// hand-over between them: GL compute passes pose the frame pipeline's vertex buffer
+// (GlSceneDeformer), and with a GPU ray tracer CUDA kernels pose its device positions on the
+// tracer's stream (cuda::GpuSceneDeformer, which the structure update and the traces follow on that
+// stream). Both evaluate the same formulas (scene/sine_deform_math.h).
 #include "cuda/gpu_scene_deformer.h"
 #include "render/frame_pipeline.h"
+#include "render/gl_scene_deformer.h"
 #include "scene/sine_deformer.h"
 
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace glint::render {
 
-// `deformers` and `pipeline` must outlive the result. glint::Error without a CUDA GPU, or when the
-// pipeline traces rays with a CPU backend (its structures are built from host vertices, which the
-// GPU deformer does not touch).
-std::unique_ptr<cuda::GpuSceneDeformer> make_gpu_deformer(const SceneDeformers& deformers, FramePipeline& pipeline);
+class GpuDeformation {
+public:
+  // `deformers` and `pipeline` must outlive this. glint::Error without a CUDA GPU where the pipeline
+  // has a GPU ray tracer, or when it traces rays with a CPU backend (its structures are built from
+  // host vertices, which neither deformer touches).
+  GpuDeformation(const SceneDeformers& deformers, FramePipeline& pipeline);
+  ~GpuDeformation();
+
+  // Poses every deformable mesh for walkthrough frame `frame` on both sides (enqueued, nothing
+  // waits) and returns their indices: the dirty list for the structure update.
+  std::vector<std::uint32_t> apply(int frame);
+
+  // The CUDA kernels' span of the last apply(), read with cuda_apply_ms(); nullopt without a GPU ray
+  // tracer (then only GL deforms, timed by its "deform" scope).
+  std::optional<std::uint64_t> last_cuda_apply() const;
+  std::optional<double> cuda_apply_ms(std::uint64_t ticket, bool wait);
+
+private:
+  GlSceneDeformer gl_;
+  std::unique_ptr<cuda::GpuSceneDeformer> cuda_;  // null without a GPU ray tracer
+};
 
 }  // namespace glint::render

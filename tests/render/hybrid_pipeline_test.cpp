@@ -145,8 +145,8 @@ TEST_F(HybridPipelineTest, HybridIsCloserToRtThanSsrOnTheAtrium) {
 
 // Renders the atrium at frame 2100 after the dinosaurs moved from their frame-2000 pose, the ray
 // tracer updated by `policy`.
-// With `deform_on_gpu` the CUDA deformer poses the meshes (GL vertices and the cuda backend's
-// positions) instead of the CPU one.
+// With `deform_on_gpu` the GPU deformers pose the meshes (GL's vertices in a compute pass, the cuda
+// backend's positions in CUDA) instead of the CPU one.
 ImageRgba8 deformed_atrium(const std::string& backend, rt::UpdatePolicy policy, bool update_tracer = true,
                            ReflectionMode mode = ReflectionMode::rt, bool deform_on_gpu = false,
                            accel::BvhBuilder builder = accel::BvhBuilder::sah) {
@@ -158,8 +158,8 @@ ImageRgba8 deformed_atrium(const std::string& backend, rt::UpdatePolicy policy, 
   FramePipeline pipeline(atrium.scene, 160, 90, settings);
   if (deform_on_gpu) {
     const SceneDeformers deformers(atrium.scene);
-    const auto gpu_deformer = make_gpu_deformer(deformers, pipeline);
-    const std::vector<std::uint32_t> dirty = gpu_deformer->apply(2100);
+    GpuDeformation gpu_deformer(deformers, pipeline);
+    const std::vector<std::uint32_t> dirty = gpu_deformer.apply(2100);
     EXPECT_FALSE(dirty.empty());
     if (update_tracer) pipeline.update_ray_tracer_on_device(dirty);
     pipeline.render(WalkthroughAnimation(atrium.scene).at(2100));
