@@ -3,7 +3,6 @@
 #include "core/error.h"
 #include "core/process_memory.h"
 #include "core/stopwatch.h"
-#include "cuda/device_query.h"
 #include "gl/gpu_memory.h"
 #include "render/gpu_deformation.h"
 
@@ -19,7 +18,6 @@ using Clock = std::chrono::steady_clock;
 
 std::optional<SceneDeformers> make_deformers(const Scene& scene, const FrameLoopOptions& options) {
   if (!options.deform || scene.deformable_meshes().empty()) return std::nullopt;
-  if (options.deform_on_gpu) require_cuda_gpu("--deform-on gpu");
   return std::optional<SceneDeformers>(std::in_place, scene);
 }
 

@@ -18,7 +18,6 @@
 #include "core/log.h"
 #include "core/progress_bar.h"
 #include "core/stopwatch.h"
-#include "cuda/device_query.h"
 #include "gl/egl_context.h"
 #include "accel/builders/builder.h"
 #include "render/frame_pipeline.h"
@@ -425,12 +424,10 @@ int run_render_command(const RenderOptions& options) {
                    "--frames all renders every frame\n",
                    frames.size(), animation.frame_count(), recorded.frames.c_str());
   }
-  const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   // Before anything is written: a CUDA run on a machine without a usable GPU is one clear line.
   if (render::uses_ray_tracer(settings)) {
     backends::check_backend_runnable(options.backend);
   }
-  if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
   if (mpi::world().size > 1) return mpi::run_render_shared(options, recorded, settings, scene, frames, rank.about());
   const OutputFolder out(options.out, options.overwrite ? EarlierRun::replace : EarlierRun::refuse);

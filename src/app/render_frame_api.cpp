@@ -4,7 +4,6 @@
 #include "app/frame_selection.h"
 #include "backends/registry.h"
 #include "core/error.h"
-#include "cuda/device_query.h"
 #include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
 #include "rt/ray_tracer.h"
@@ -29,12 +28,10 @@ ImageRgba8 render_frame(const RenderOptions& options, int frame) {
   load.flat_normals = options.flat_normals;
   Scene scene = load_scene(options.scene, load);
   const std::vector<int> frames = selection.resolve(WalkthroughAnimation(scene).frame_count());
-  const bool deforms = options.deform == "on" && !scene.deformable_meshes().empty();
   check_structure_follows_deformation(options, settings, scene);
   if (render::uses_ray_tracer(settings)) {
     backends::check_backend_runnable(options.backend);
   }
-  if (deforms && deforms_on_gpu(options)) require_cuda_gpu("--deform-on gpu");
 
   HeadlessGlContext context;
   FrameLoopOptions loop_options{options.width, options.height, options.deform == "on", deforms_on_gpu(options)};

@@ -10,7 +10,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -166,8 +169,7 @@ TEST_F(RenderCli, CudaBackendWithoutAGpuIsOneClearLine) {
   if (cuda_gpu_present()) GTEST_SKIP() << "this machine has a CUDA GPU (the cuda backend runs instead)";
   TempFolder folder;
   const fs::path out = folder.path() / "cuda";
-  // The GPU deformer alone (no ray tracer: ssr reflections, cube shadows) needs CUDA too.
-  for (const char* flags : {"--backend cuda", "--reflections ssr --shadows cube --deform-on gpu"}) {
+  for (const char* flags : {"--backend cuda"}) {
     const CliResult r = run_glint(std::string("render atrium-simple --frames 2100 --width 32 --height 18 ") + flags +
                                   " --out " + quoted(out));
     EXPECT_EQ(r.exit_code, 1) << flags;
@@ -175,6 +177,40 @@ TEST_F(RenderCli, CudaBackendWithoutAGpuIsOneClearLine) {
     EXPECT_NE(r.err.find("CUDA"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << flags;
   }
+}
+
+// Without a ray tracer (ssr reflections, cube shadows) --deform-on gpu needs no CUDA: GL alone poses
+// its vertex buffer (GlSceneDeformer), on any OpenGL 4.5, and the frames are the CPU deformer's.
+TEST_F(RenderCli, GpuDeformationWithoutRaysIsGlAloneAndDrawsTheCpuDeformersFrame) {
+  TempFolder folder;
+  std::map<std::string, fs::path> frames;
+  for (const char* where : {"gpu", "cpu"}) {
+    const fs::path out = folder.path() / where;
+    const CliResult r = run_glint(std::string("render atrium --frames 2100 --width 160 --height 90 --reflections ssr "
+                                              "--shadows cube --deform on --deform-on ") +
+                                  where + " --out " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << where << ": " << r.err;
+    frames[where] = out / "frame_02100.png";
+  }
+  // Pixels more than 8 levels apart (largest channel). The two deformers' positions differ by an ulp
+  // (GlSceneDeformerTest), which can move a triangle edge across a pixel centre: a few pixels.
+  const auto differing = [](const ImageRgba8& a, const ImageRgba8& b) {
+    int count = 0;
+    for (std::size_t i = 0; i < a.pixels.size() && i < b.pixels.size(); ++i) {
+      const auto p = a.pixels[i], q = b.pixels[i];
+      count += std::max({std::abs(p.x - q.x), std::abs(p.y - q.y), std::abs(p.z - q.z)}) > 8;
+    }
+    return count;
+  };
+  const ImageRgba8 gpu = read_png(frames["gpu"]), cpu = read_png(frames["cpu"]);
+  ASSERT_EQ(gpu.pixels.size(), 160u * 90u);
+  const int edge_flips = differing(gpu, cpu);
+  EXPECT_LE(edge_flips, 160 * 90 / 500) << "GL's deformation against the CPU's (measured on llvmpipe: 3)";
+  // Against the meshes at rest: the dinosaurs moved, so more pixels differ (measured: 53).
+  const fs::path rest = folder.path() / "rest";
+  ASSERT_EQ(run_glint("render atrium --frames 2100 --width 160 --height 90 --reflections ssr --shadows cube --deform "
+                      "off --out " + quoted(rest)).exit_code, 0);
+  EXPECT_GT(differing(read_png(rest / "frame_02100.png"), gpu), 3 * std::max(edge_flips, 5));
 }
 
 TEST_F(RenderCli, GpuDeformationWithACpuTracerIsOneClearLine) {

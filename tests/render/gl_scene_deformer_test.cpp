@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace glint::render {
@@ -65,7 +66,9 @@ TEST_F(GlSceneDeformerTest, PosesTheVertexBufferAsTheCpuDeformerPosesTheMeshes) 
       }
     }
     EXPECT_GT(moved, 100) << "frame " << frame << ": the dinosaurs must move";
+    std::printf("frame %d: largest position error %g (extent %g), normal error %g\n", frame, position_error, extent, normal_error);
     // Float rounding of sin and of the sums (llvmpipe and NVIDIA's GL evaluate sin their own way).
+    // Measured on llvmpipe: positions 2.4e-7 off (extent 3.2), normals 4.3e-6.
     EXPECT_LE(position_error, 1e-5f * std::max(extent, 1.0f)) << "frame " << frame;
     EXPECT_LE(normal_error, 1e-3f) << "frame " << frame;
   }
