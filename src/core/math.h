@@ -34,6 +34,13 @@ struct Aabb {
     max = glm::max(max, b.max);
   }
   GLINT_HOST_DEVICE vec3 extent() const { return empty() ? vec3(0.0f) : max - min; }
+  // Per axis, the largest absolute coordinate in the box: how far from the origin it reaches, which
+  // sets the float step of its coordinates (ray offsets, precision checks, conservative slack).
+  GLINT_HOST_DEVICE vec3 largest_abs() const { return glm::max(glm::abs(min), glm::abs(max)); }
+  GLINT_HOST_DEVICE float largest_abs_coordinate() const {
+    const vec3 a = largest_abs();
+    return glm::max(a.x, glm::max(a.y, a.z));
+  }
   GLINT_HOST_DEVICE vec3 center() const { return 0.5f * (min + max); }
   GLINT_HOST_DEVICE bool contains(const vec3& p) const {
     return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y && p.z <= max.z;

@@ -10,9 +10,8 @@ float ray_origin_offset(float fraction, const Aabb& world_bounds) {
   const float diagonal = world_bounds.empty() ? 0.0f : glm::length(world_bounds.extent());
   const float by_size = fraction * (diagonal > 0.0f ? diagonal : 1.0f);
   if (world_bounds.empty() || !(fraction > 0.0f)) return by_size;
-  const vec3 largest = glm::max(glm::abs(world_bounds.min), glm::abs(world_bounds.max));
-  const float magnitude = std::max({largest.x, largest.y, largest.z});
-  return std::max(by_size, kRayOriginOffsetSteps * std::numeric_limits<float>::epsilon() * magnitude);
+  return std::max(by_size,
+                  kRayOriginOffsetSteps * std::numeric_limits<float>::epsilon() * world_bounds.largest_abs_coordinate());
 }
 
 }  // namespace glint::render

@@ -58,7 +58,7 @@ bool box_may_be_in_frustum(const Aabb& box, const mat4& view_projection) {
 // `box` moved by -light (the faces look from the origin), widened by a few float steps of its
 // coordinates so that the rounded subtraction never shrinks it: culling stays conservative.
 Aabb light_relative(const Aabb& box, vec3 light) {
-  const vec3 slack = 2e-7f * glm::max(glm::abs(box.min), glm::abs(box.max)) + 2e-7f * glm::abs(light);
+  const vec3 slack = 2e-7f * box.largest_abs() + 2e-7f * glm::abs(light);
   return Aabb{box.min - light - slack, box.max - light + slack};
 }
 

@@ -19,8 +19,7 @@ void warn_about_coarse_coordinates(const Scene& scene) {
     if (box.empty()) continue;
     const vec3 extent = box.extent();
     const float largest_extent = std::max({extent.x, extent.y, extent.z});
-    const vec3 far_corner = glm::max(glm::abs(box.min), glm::abs(box.max));
-    const float coordinate = std::max({far_corner.x, far_corner.y, far_corner.z});
+    const float coordinate = box.largest_abs_coordinate();
     const float step = std::nextafter(coordinate, std::numeric_limits<float>::infinity()) - coordinate;
     if (!(largest_extent > 0.0f) || !std::isfinite(step)) continue;
     const double steps = static_cast<double>(largest_extent) / static_cast<double>(step);

@@ -109,9 +109,8 @@ SceneFrame scene_frame(const Scene& scene) {
     }
   }
   frame.centroid = area > 0.0 && std::isfinite(area) ? vec3(weighted / area) : frame.centre;
-  const vec3 magnitude = glm::max(glm::abs(frame.bounds.min), glm::abs(frame.bounds.max));
-  const float largest = std::max({magnitude.x, magnitude.y, magnitude.z});
-  frame.tolerance = std::max(1e-3f * frame.diagonal, 8.0f * largest * std::numeric_limits<float>::epsilon());
+  frame.tolerance = std::max(1e-3f * frame.diagonal,
+                             8.0f * frame.bounds.largest_abs_coordinate() * std::numeric_limits<float>::epsilon());
   return frame;
 }
 
