@@ -37,7 +37,7 @@ std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
   const float time_seconds = s.deformers->time_at(frame);
   const std::uint64_t ticket = start_span(s.timed, s.stream);
   for (std::size_t k = 0; k < s.meshes.size(); ++k)
-    s.meshes[k].apply(time_seconds, s.tracer->device_positions(s.deformers->meshes()[k]), nullptr, s.stream);
+    s.meshes[k].apply(time_seconds, s.tracer->device_positions(s.deformers->meshes()[k]), s.stream);
   stop_span(s.timed, ticket, s.stream);
   s.last_apply = ticket;
   return s.deformers->meshes();
@@ -58,7 +58,7 @@ GpuPosedMesh pose_mesh_on_gpu(const SineDeformer& deformer, float time_seconds) 
   DeviceBuffer<vec3> positions(gpu.vertex_count());
   DeviceBuffer<DeformedGlVertex> vertices(gpu.vertex_count());
   vertices.fill_zero();
-  gpu.apply(time_seconds, positions.data(), vertices.data(), nullptr);
+  gpu.apply_with_normals(time_seconds, positions.data(), vertices.data(), nullptr);
   GLINT_CUDA_CHECK(cudaDeviceSynchronize());
   GpuPosedMesh posed;
   posed.positions = positions.download();

@@ -23,7 +23,7 @@ __global__ void face_normals_kernel(const vec3* posed, const uint32_t* indices, 
 }
 
 // Gathers each vertex's face normals in the CPU deformer's order (ascending triangles), so the sums
-// match it up to fused multiply-adds; writes the GL vertex when asked.
+// match it up to fused multiply-adds, and writes each vertex's position and normal.
 __global__ void vertex_normals_kernel(const vec3* posed, const vec3* face_normals, const uint32_t* offsets,
                                       const uint32_t* triangles, uint32_t vertex_count, DeformedGlVertex* gl_vertices) {
   const uint32_t v = blockIdx.x * blockDim.x + threadIdx.x;
@@ -38,7 +38,8 @@ __global__ void vertex_normals_kernel(const vec3* posed, const vec3* face_normal
 
 }  // namespace
 
-GpuSineDeformer::GpuSineDeformer(const SineDeformer& deformer) : parameters_(deformer.parameters()) {
+GpuSineDeformer::GpuSineDeformer(const SineDeformer& deformer)
+    : mesh_name_(deformer.mesh_name()), parameters_(deformer.parameters()) {
   const std::vector<std::size_t>& offsets = deformer.vertex_offsets();
   if (!offsets.empty() && offsets.back() > 0xFFFFFFFFull)
     fail_message("mesh '" + deformer.mesh_name() + "': too many triangle corners for the GPU deformer");
@@ -47,27 +48,38 @@ GpuSineDeformer::GpuSineDeformer(const SineDeformer& deformer) : parameters_(def
   indices_.upload(std::span<const uint32_t>(deformer.indices()));
   vertex_offsets_.upload(std::span<const uint32_t>(offsets32));
   vertex_triangles_.upload(std::span<const uint32_t>(deformer.vertex_triangles()));
-  posed_.resize(rest_.size());
-  face_normals_.resize(indices_.size() / 3);
 }
 
-void GpuSineDeformer::apply(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices, cudaStream_t stream) {
+void GpuSineDeformer::apply(float time_seconds, vec3* positions, cudaStream_t stream) {
+  const uint32_t vertex_count = this->vertex_count();
+  if (vertex_count == 0) return;
+  require_device_memory(positions, "positions");
+  pose_positions<<<blocks_for(vertex_count), kBlockSize, 0, stream>>>(rest_.data(), vertex_count, parameters_,
+                                                                      parameters_.speed * time_seconds, positions);
+  GLINT_CUDA_CHECK_LAUNCH();
+}
+
+void GpuSineDeformer::apply_with_normals(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices,
+                                         cudaStream_t stream) {
   const uint32_t vertex_count = this->vertex_count();
   const auto triangle_count = static_cast<uint32_t>(indices_.size() / 3);
   if (vertex_count == 0) return;
-  vec3* posed = positions ? positions : posed_.data();
-  pose_positions<<<blocks_for(vertex_count), kBlockSize, 0, stream>>>(rest_.data(), vertex_count, parameters_,
-                                                                      parameters_.speed * time_seconds, posed);
-  GLINT_CUDA_CHECK_LAUNCH();
-  if (gl_vertices == nullptr) return;
+  require_device_memory(gl_vertices, "vertices");
+  apply(time_seconds, positions, stream);
+  face_normals_.resize(triangle_count);  // allocates once: the same size on every later call
   if (triangle_count != 0) {
-    face_normals_kernel<<<blocks_for(triangle_count), kBlockSize, 0, stream>>>(posed, indices_.data(), triangle_count,
-                                                                              face_normals_.data());
+    face_normals_kernel<<<blocks_for(triangle_count), kBlockSize, 0, stream>>>(positions, indices_.data(),
+                                                                              triangle_count, face_normals_.data());
     GLINT_CUDA_CHECK_LAUNCH();
   }
   vertex_normals_kernel<<<blocks_for(vertex_count), kBlockSize, 0, stream>>>(
-      posed, face_normals_.data(), vertex_offsets_.data(), vertex_triangles_.data(), vertex_count, gl_vertices);
+      positions, face_normals_.data(), vertex_offsets_.data(), vertex_triangles_.data(), vertex_count, gl_vertices);
   GLINT_CUDA_CHECK_LAUNCH();
+}
+
+void GpuSineDeformer::require_device_memory(const void* pointer, const char* what) const {
+  if (pointer == nullptr)
+    fail_message("mesh '" + mesh_name_ + "': the GPU deformer was given no device memory for its " + what);
 }
 
 }  // namespace glint::cuda

@@ -6,27 +6,35 @@
 #include "cuda/gpu_scene_deformer.h"
 #include "scene/sine_deformer.h"
 
+#include <string>
+
 namespace glint::cuda {
 
 class GpuSineDeformer {
 public:
   explicit GpuSineDeformer(const SineDeformer& deformer);
 
-  // Poses the mesh at `time_seconds` on `stream`: positions into `positions` (vertex_count vec3,
-  // device memory, may be null) and positions and normals into `gl_vertices` (vertex_count
-  // entries, device memory, may be null; w components kept).
-  void apply(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices, cudaStream_t stream);
+  // Poses the mesh's positions at `time_seconds` into `positions` (vertex_count vec3 of device
+  // memory; null only for a mesh without vertices, glint::Error otherwise), on `stream`. The frame
+  // path's call: it needs no scratch memory.
+  void apply(float time_seconds, vec3* positions, cudaStream_t stream);
+  // apply(), then each vertex's smooth normal, written with its position into `gl_vertices`
+  // (vertex_count entries of device memory, same null rule; w components kept). Its per-triangle
+  // scratch is allocated on the first call, so only pose_mesh_on_gpu (tests) pays for it.
+  void apply_with_normals(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices, cudaStream_t stream);
 
   uint32_t vertex_count() const { return static_cast<uint32_t>(rest_.size()); }
 
 private:
+  void require_device_memory(const void* pointer, const char* what) const;
+
+  std::string mesh_name_;  // for error messages
   SineDeform parameters_;
   DeviceBuffer<vec3> rest_;
   DeviceBuffer<uint32_t> indices_;
   DeviceBuffer<uint32_t> vertex_offsets_;    // vertex_count + 1
   DeviceBuffer<uint32_t> vertex_triangles_;  // ascending per vertex, like the CPU deformer's
-  DeviceBuffer<vec3> posed_;                 // scratch: positions when the caller gives none
-  DeviceBuffer<vec3> face_normals_;          // scratch, one per triangle
+  DeviceBuffer<vec3> face_normals_;          // apply_with_normals' scratch, one per triangle
 };
 
 }  // namespace glint::cuda
