@@ -56,13 +56,12 @@ GpuPosedMesh pose_mesh_on_gpu(const SineDeformer& deformer, float time_seconds) 
   require_cuda_gpu("the GPU deformer");
   GpuSineDeformer gpu(deformer);
   DeviceBuffer<vec3> positions(gpu.vertex_count());
-  DeviceBuffer<DeformedGlVertex> vertices(gpu.vertex_count());
-  vertices.fill_zero();
+  DeviceBuffer<PosedVertex> vertices(gpu.vertex_count());
   gpu.apply_with_normals(time_seconds, positions.data(), vertices.data(), nullptr);
   GLINT_CUDA_CHECK(cudaDeviceSynchronize());
   GpuPosedMesh posed;
   posed.positions = positions.download();
-  for (const DeformedGlVertex& vertex : vertices.download()) posed.normals.emplace_back(vertex.normal_v);
+  for (const PosedVertex& vertex : vertices.download()) posed.normals.push_back(vertex.normal);
   return posed;
 }
 

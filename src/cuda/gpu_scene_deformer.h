@@ -17,14 +17,6 @@
 
 namespace glint::cuda {
 
-// A posed vertex with its smooth normal (pose_mesh_on_gpu's output; the layout of render::GpuVertex,
-// xyz from the deformer, w left alone).
-struct DeformedGlVertex {
-  vec4 position_u;
-  vec4 normal_v;
-};
-static_assert(sizeof(DeformedGlVertex) == 32);
-
 class GpuSceneDeformer {
 public:
   // `deformers`: the CPU deformers of the scene (their rest poses, parameters and adjacency are

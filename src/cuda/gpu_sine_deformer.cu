@@ -25,15 +25,13 @@ __global__ void face_normals_kernel(const vec3* posed, const uint32_t* indices, 
 // Gathers each vertex's face normals in the CPU deformer's order (ascending triangles), so the sums
 // match it up to fused multiply-adds, and writes each vertex's position and normal.
 __global__ void vertex_normals_kernel(const vec3* posed, const vec3* face_normals, const uint32_t* offsets,
-                                      const uint32_t* triangles, uint32_t vertex_count, DeformedGlVertex* gl_vertices) {
+                                      const uint32_t* triangles, uint32_t vertex_count, PosedVertex* vertices) {
   const uint32_t v = blockIdx.x * blockDim.x + threadIdx.x;
   if (v >= vertex_count) return;
   vec3 sum(0.0f);
   for (uint32_t k = offsets[v]; k < offsets[v + 1]; ++k) sum += face_normals[triangles[k]];
   const vec3 normal = smooth_normal_from_sum(sum);
-  DeformedGlVertex& out = gl_vertices[v];
-  out.position_u = vec4(posed[v], out.position_u.w);
-  out.normal_v = vec4(normal, out.normal_v.w);
+  vertices[v] = PosedVertex{posed[v], normal};
 }
 
 }  // namespace
@@ -59,12 +57,12 @@ void GpuSineDeformer::apply(float time_seconds, vec3* positions, cudaStream_t st
   GLINT_CUDA_CHECK_LAUNCH();
 }
 
-void GpuSineDeformer::apply_with_normals(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices,
+void GpuSineDeformer::apply_with_normals(float time_seconds, vec3* positions, PosedVertex* vertices,
                                          cudaStream_t stream) {
   const uint32_t vertex_count = this->vertex_count();
   const auto triangle_count = static_cast<uint32_t>(indices_.size() / 3);
   if (vertex_count == 0) return;
-  require_device_memory(gl_vertices, "vertices");
+  require_device_memory(vertices, "vertices");
   apply(time_seconds, positions, stream);
   face_normals_.resize(triangle_count);  // allocates once: the same size on every later call
   if (triangle_count != 0) {
@@ -73,7 +71,7 @@ void GpuSineDeformer::apply_with_normals(float time_seconds, vec3* positions, De
     GLINT_CUDA_CHECK_LAUNCH();
   }
   vertex_normals_kernel<<<blocks_for(vertex_count), kBlockSize, 0, stream>>>(
-      positions, face_normals_.data(), vertex_offsets_.data(), vertex_triangles_.data(), vertex_count, gl_vertices);
+      positions, face_normals_.data(), vertex_offsets_.data(), vertex_triangles_.data(), vertex_count, vertices);
   GLINT_CUDA_CHECK_LAUNCH();
 }
 

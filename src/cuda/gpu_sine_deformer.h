@@ -2,13 +2,21 @@
 // One deformable mesh's sine deformer on the GPU: the rest pose, the index buffer and the CPU
 // deformer's vertex -> triangles adjacency in device memory, and the kernels that pose it.
 // CUDA-only header: include it from .cu files.
+#include "core/math.h"
 #include "cuda/device_buffer.h"
-#include "cuda/gpu_scene_deformer.h"
 #include "scene/sine_deformer.h"
 
 #include <string>
 
 namespace glint::cuda {
+
+// One vertex as apply_with_normals() poses it: its position and smooth unit normal. Only
+// pose_mesh_on_gpu (cuda/gpu_scene_deformer.h, for tests) asks for normals; the frame path poses
+// positions alone.
+struct PosedVertex {
+  vec3 position;
+  vec3 normal;
+};
 
 class GpuSineDeformer {
 public:
@@ -18,10 +26,10 @@ public:
   // memory; null only for a mesh without vertices, glint::Error otherwise), on `stream`. The frame
   // path's call: it needs no scratch memory.
   void apply(float time_seconds, vec3* positions, cudaStream_t stream);
-  // apply(), then each vertex's smooth normal, written with its position into `gl_vertices`
-  // (vertex_count entries of device memory, same null rule; w components kept). Its per-triangle
-  // scratch is allocated on the first call, so only pose_mesh_on_gpu (tests) pays for it.
-  void apply_with_normals(float time_seconds, vec3* positions, DeformedGlVertex* gl_vertices, cudaStream_t stream);
+  // apply(), then each vertex's smooth normal, written with its position into `vertices`
+  // (vertex_count entries of device memory, same null rule). Its per-triangle scratch is allocated
+  // on the first call, so only pose_mesh_on_gpu (tests) pays for it.
+  void apply_with_normals(float time_seconds, vec3* positions, PosedVertex* vertices, cudaStream_t stream);
 
   uint32_t vertex_count() const { return static_cast<uint32_t>(rest_.size()); }
 
