@@ -15,7 +15,6 @@ struct GpuSceneDeformer::State {
   const SceneDeformers* deformers = nullptr;
   std::vector<GpuSineDeformer> meshes;  // parallel to deformers->meshes()
   rt::DeviceTracing* tracer = nullptr;
-  cudaStream_t stream = nullptr;  // the tracer's
   GpuSpanPool<CudaSpan> timed{"GPU deformer"};  // one span per apply, read once by the frame loop
   std::optional<std::uint64_t> last_apply;
 };
@@ -27,7 +26,6 @@ GpuSceneDeformer::GpuSceneDeformer(const SceneDeformers& deformers, rt::DeviceTr
   s.deformers = &deformers;
   for (const SineDeformer& deformer : deformers.deformers()) s.meshes.emplace_back(deformer);
   s.tracer = &tracer;
-  s.stream = static_cast<cudaStream_t>(tracer.stream());
 }
 
 GpuSceneDeformer::~GpuSceneDeformer() = default;
@@ -35,10 +33,11 @@ GpuSceneDeformer::~GpuSceneDeformer() = default;
 std::vector<std::uint32_t> GpuSceneDeformer::apply(int frame) {
   State& s = *state_;
   const float time_seconds = s.deformers->time_at(frame);
-  const std::uint64_t ticket = start_span(s.timed, s.stream);
+  const auto stream = static_cast<cudaStream_t>(s.tracer->stream());  // so its update follows the poses
+  const std::uint64_t ticket = start_span(s.timed, stream);
   for (std::size_t k = 0; k < s.meshes.size(); ++k)
-    s.meshes[k].apply(time_seconds, s.tracer->device_positions(s.deformers->meshes()[k]), s.stream);
-  stop_span(s.timed, ticket, s.stream);
+    s.meshes[k].apply(time_seconds, s.tracer->device_positions(s.deformers->meshes()[k]), stream);
+  stop_span(s.timed, ticket, stream);
   s.last_apply = ticket;
   return s.deformers->meshes();
 }
