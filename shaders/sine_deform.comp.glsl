@@ -1,9 +1,9 @@
 #version 450 core
-// The sine deformer on the GPU's GL side (GlSceneDeformer, docs/render.md "Deformation"): poses one
-// deformable mesh into the scene's vertex buffer in three stages, the formulas of
+// The sine deformer on the GPU's GL side (GlSceneDeformer, docs/hybrid.md "Deformable meshes"):
+// poses one deformable mesh into the scene's vertex buffer in three stages, the formulas of
 // scene/sine_deform_math.h and SineDeformer (CPU) and cuda/gpu_sine_deformer.cu (CUDA):
 //   stage 0, per vertex:   posed = rest moved along displace_axis by amplitude * sin(frequency *
-//                          rest[wave_axis] + phase);
+//                          rest[wave_axis] + phase), phase = speed * time_seconds;
 //   stage 1, per triangle: its area-weighted normal, cross(b - a, c - a);
 //   stage 2, per vertex:   the sum of its triangles' normals in ascending triangle order (the CPU's
 //                          order), normalised (+y where it vanishes), written with the position into
@@ -24,21 +24,28 @@ layout(std430, binding = 15) readonly buffer VertexTriangles { uint vertex_trian
 layout(std430, binding = 16) buffer Posed { vec4 posed[]; };
 layout(std430, binding = 17) buffer FaceNormals { vec4 face_normals[]; };
 
+// The mesh's constants, written once per mesh and bound per mesh (GlSceneDeformer's MeshConstants,
+// kMeshConstantsBinding; uniform-buffer binding 0 is FrameConstants).
+layout(std140, binding = 1) uniform MeshConstants {
+  int vertex_count;
+  int triangle_count;
+  int base_vertex;  // the mesh's first vertex in the scene's vertex buffer
+  int displace_axis;
+  int wave_axis;
+  float amplitude;
+  float frequency;
+  float speed;
+};
+
+uniform float time_seconds;  // the frame's (SceneDeformers::time_at), the same for every mesh
 uniform int stage;
-uniform int vertex_count;
-uniform int triangle_count;
-uniform int base_vertex;  // the mesh's first vertex in the scene's vertex buffer
-uniform int displace_axis;
-uniform int wave_axis;
-uniform float amplitude;
-uniform float frequency;
-uniform float phase;
 
 void main() {
   const uint i = gl_GlobalInvocationID.x;
   if (stage == 0) {
     if (i >= uint(vertex_count)) return;
     precise vec3 moved = rest[i].xyz;
+    precise float phase = speed * time_seconds;  // one rounded product, as the CPU's
     precise float wave = frequency * moved[wave_axis] + phase;
     moved[displace_axis] = moved[displace_axis] + amplitude * sin(wave);
     posed[i] = vec4(moved, 0.0);

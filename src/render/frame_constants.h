@@ -24,6 +24,8 @@
 
 namespace glint::render {
 
+// Uniform-buffer binding points (apart from the storage bindings' numbers): 0 this block; 1 a
+// deforming mesh's constants in GlSceneDeformer's pass (gl_scene_deformer.cpp, kMeshConstantsBinding).
 inline constexpr unsigned kFrameConstantsBinding = 0;
 
 struct FrameConstants {

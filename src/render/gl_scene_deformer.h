@@ -31,10 +31,10 @@ public:
 
 private:
   struct MeshBuffers {
-    std::uint32_t base_vertex = 0;
     std::uint32_t vertex_count = 0;
     std::uint32_t triangle_count = 0;
     GlBuffer rest, indices, vertex_offsets, vertex_triangles, posed, face_normals;
+    GlBuffer constants;  // the shader's MeshConstants uniform block, written once
   };
   const SceneDeformers& deformers_;
   GpuScene& scene_;
