@@ -122,6 +122,9 @@ std::vector<std::string> RenderRunRecord::timings_header() {
   for (const char* column : {"classify_ms", "tiles_none", "tiles_ssr_only", "tiles_ssr_fallback", "tiles_rt_only",
                              "ray_budget", "budget_factor", "rays_wanted"})
     header.emplace_back(column);
+  // Of trace_ms, the hits' shadow rays traced with the hits (cuda and optix with rt or hybrid
+  // shadows; the last column so that the earlier ones keep their places).
+  header.emplace_back("hit_shadow_trace_ms");
   return header;
 }
 
@@ -142,7 +145,7 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
     }
   }
   // Passes without a column of their own count in the total too (the gl backend's "trace", which
-  // timings.csv gives as trace_ms).
+  // timings.csv gives as trace_ms; cuda's and optix's "device_trace", frame_pipeline.h).
   for (const PassTime& time : frame.times.passes)
     if (std::find(std::begin(render::kFramePassNames), std::end(render::kFramePassNames), time.name) ==
         std::end(render::kFramePassNames))
@@ -175,6 +178,7 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   row.emplace_back(adaptive && adaptive->ray_budget ? CsvField(*adaptive->ray_budget) : CsvField(""));
   row.emplace_back(adaptive ? CsvField(static_cast<double>(adaptive->budget_factor)) : CsvField(""));
   row.emplace_back(adaptive ? CsvField(adaptive->rays_wanted) : CsvField(""));
+  row.emplace_back(rays ? CsvField(rays->hit_shadow_trace_ms) : CsvField(""));
   if (classify_ms) recorded["classify_ms"] = *classify_ms;
   resident_.add(frame.resident_bytes);
   gpu_memory_.add(frame.gpu_memory_used_bytes);
@@ -185,6 +189,7 @@ std::vector<CsvField> RenderRunRecord::add_frame(const Frame& frame) {
   if (frame.accel_update_ms) recorded["accel_update_ms"] = *frame.accel_update_ms;
   if (rays) {
     recorded["trace_ms"] = rays->trace_ms;
+    recorded["hit_shadow_trace_ms"] = rays->hit_shadow_trace_ms;
     recorded["rays_traced"] = rays->rays_traced;
   }
   if (frames_recorded_++ == 0)

@@ -33,7 +33,7 @@ public:
   // Column names of timings.csv: frame, <pass>_ms for every pass of render::kFramePassNames,
   // gpu_total_ms, frame_ms (steady state: previous frame's completion to this one's),
   // frame_latency_ms (this frame's CPU start to its GPU end), deform_ms, accel_update_ms, trace_ms, triangles, reflective_pixels,
-  // ssr_failed_pixels, rays_traced, resident_mb, gpu_memory_used_mb.
+  // ssr_failed_pixels, rays_traced, resident_mb, gpu_memory_used_mb, auto's columns, hit_shadow_trace_ms.
   static std::vector<std::string> timings_header();
 
   // The timings.csv row of one frame (and remembers it for the means in run.json). A pass that did

@@ -25,14 +25,21 @@ private:
   RayHitBuffers& buffers_;
   HitShadowRays* hit_shadows_;   // null without shadow rays
   cuda::GlBufferInterop interop_;  // rays, hits, counters
-  // Per readback slot: the trace's GPU time, read once (the read frees the tracer's span) and kept
-  // for a second stats() of the slot; a ticket still unread when its slot is traced again can no
-  // longer be asked for, and is let go.
-  struct TraceTime {
+  // A trace's GPU time, read once (the read frees the tracer's span) and kept for a second stats()
+  // of the slot; a ticket still unread when its slot is traced again can no longer be asked for,
+  // and is let go (drop).
+  struct GpuTime {
     std::optional<rt::GpuTicket> unread;
     std::optional<double> ms;
+    std::optional<double> read(rt::DeviceTracing& device, bool wait);  // nullopt: not there yet
+    void drop(rt::DeviceTracing& device);
   };
-  std::array<TraceTime, kFramesInFlight> times_{};
+  // Per readback slot: the closest-hit trace's time and, where traced with the hits, the hits'
+  // shadow rays' (never asked for: no ticket).
+  struct TraceTimes {
+    GpuTime closest, hit_shadows;
+  };
+  std::array<TraceTimes, kFramesInFlight> times_{};
 };
 
 }  // namespace glint::render

@@ -189,6 +189,7 @@ void FramePipeline::render_more_reflection_samples(std::size_t slot) {
     total.rays_traced += stats->rays_traced;
     total.reflective_pixels = stats->reflective_pixels;
     total.trace_ms += stats->trace_ms;
+    total.hit_shadow_trace_ms += stats->hit_shadow_trace_ms;
   };
   count_rays();
   sample_mean_->add(reflection_image(), 0, samples);

@@ -47,6 +47,8 @@ namespace glint::render {
 
 // Timer names of the passes, in the order timings.csv lists them (not the order they run:
 // the shadow mask needs the G-buffer, so "gbuffer" runs first).
+// A device backend's "device_trace" pass (its reflection trace with the hits' shadow rays, as GL
+// sees it) has no column of its own: it counts in gpu_total_ms, and --profile-scopes shows it.
 inline constexpr std::string_view kFramePassNames[] = {"shadow",   "gbuffer",   "light",  "ssr",
                                                        "ray_list", "hit_shade", "resolve"};
 

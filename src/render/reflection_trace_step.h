@@ -5,7 +5,7 @@
 // written once, in its own file:
 //   HostReflectionTrace   (cpu, embree): the CPU waits for the list, traces host-mapped buffers;
 //   DeviceReflectionTrace (cuda, optix: rt::DeviceTracing): the GL buffers mapped into CUDA, no
-//                         host wait;
+//                         host wait; timed as the "device_trace" pass;
 //   GlReflectionTrace     (gl: rt::GlTracing): compute shaders over the GL buffers, a timed GL pass.
 #include "gl/gpu_timer.h"
 #include "render/ray_hit_buffers.h"
@@ -23,9 +23,14 @@ class HitShadowRays;
 struct RayTraceFrameStats {
   std::uint32_t rays_traced = 0;        // rays in the list, all traced
   std::uint32_t reflective_pixels = 0;  // reflective pixels the ray-list pass saw
-  // CPU backends: the backend's trace_closest, wall clock; cuda and optix: the trace kernel's GPU
-  // time (CUDA events); gl: the frame timer's "trace" pass (filled in by FrameLoop; 0 here).
+  // CPU backends: the backend's trace_closest, wall clock; cuda and optix: the trace kernels' GPU
+  // time (CUDA events), the hits' shadow rays included where they are traced with the hits (rt and
+  // hybrid shadows): the work each traced ray brings, for --reflections auto's cost model; gl: the
+  // frame timer's "trace" pass (filled in by FrameLoop; 0 here). The other backends trace the hits'
+  // shadow rays in the hit_shade pass.
   double trace_ms = 0.0;
+  // Of trace_ms, the hits' shadow rays (cuda and optix with rt or hybrid shadows; 0 otherwise).
+  double hit_shadow_trace_ms = 0.0;
 };
 
 class ReflectionTraceStep {

@@ -52,7 +52,7 @@ void check_frame_times_cell(const fs::path& out, const nlohmann::json& cell) {
   const auto csv = read_csv(out / cell["csv"].get<std::string>());
   ASSERT_EQ(csv.size(), 5u) << "header + frames 0, 1225, 2450, 3675";
   const std::vector<std::string>& header = csv[0];
-  ASSERT_EQ(header.size(), 28u);
+  ASSERT_EQ(header.size(), 29u);
   EXPECT_EQ(header[0], "frame");
   const std::vector<std::string> frames = {"0", "1225", "2450", "3675"};
   for (std::size_t row = 1; row < csv.size(); ++row) {

@@ -53,7 +53,7 @@ TEST_F(RenderCli, WritesFramesDebugViewsTimingsRunRecordAndVideo) {
       "hit_shade_ms", "resolve_ms",      "gpu_total_ms", "frame_ms", "frame_latency_ms", "deform_ms", "accel_update_ms",
       "trace_ms",     "triangles",       "reflective_pixels", "ssr_failed_pixels", "rays_traced",
       "resident_mb",  "gpu_memory_used_mb", "classify_ms", "tiles_none", "tiles_ssr_only", "tiles_ssr_fallback",
-      "tiles_rt_only", "ray_budget", "budget_factor", "rays_wanted"};
+      "tiles_rt_only", "ray_budget", "budget_factor", "rays_wanted", "hit_shadow_trace_ms"};
   EXPECT_EQ(csv[0], header);
   EXPECT_EQ(csv[1][0], "2100");
   EXPECT_EQ(csv[2][0], "2101");
@@ -107,7 +107,7 @@ TEST_F(RenderCli, ReflectionsOffLeavesTheSsrColumnsEmptyAndTimingsOnlyWritesNoIm
   EXPECT_TRUE(fs::exists(out / "run.json"));
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 28u);
+  ASSERT_EQ(csv[1].size(), 29u);
   for (const int column : {4, 5, 6, 12, 13, 15, 16, 17})
     EXPECT_EQ(csv[1][column], "") << "column " << column << " (no SSR, no ray tracing)";
 }
@@ -120,7 +120,7 @@ TEST_F(RenderCli, RtModeWithEmbreeTracesEveryReflectivePixel) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto csv = read_csv(out / "timings.csv");
   ASSERT_EQ(csv.size(), 2u);
-  ASSERT_EQ(csv[1].size(), 28u);
+  ASSERT_EQ(csv[1].size(), 29u);
   EXPECT_EQ(csv[1][4], "") << "no SSR in rt mode";
   EXPECT_EQ(csv[1][16], "") << "no SSR failures in rt mode";
   EXPECT_GT(std::stoul(csv[1][17]), 0u);

@@ -164,7 +164,7 @@ TEST_F(RenderScopesCli, CudaTracesAreInsideTheScopesAroundThem) {
     trace_kernel_ms += std::stod(timings[row][static_cast<std::size_t>(column)]);
     bool shadow_trace = false;
     for (const Scope& scope : frames.at(frame)) {
-      if (scope.path == "trace") trace_scope_ms += scope.ms;
+      if (scope.path == "device_trace/trace") trace_scope_ms += scope.ms;  // its GPU pass around it
       if (scope.path == "shadow/shadow_rays/trace") shadow_trace = scope.ms > 0.0;
     }
     EXPECT_TRUE(shadow_trace) << "frame " << frame;
