@@ -65,7 +65,7 @@ float texture_lod(vec3 e1, vec3 e2, vec2 uv1, vec2 uv2, vec3 normal, Ray ray, fl
   const float world_area = length(cross(e1, e2));
   const float uv_area = abs(uv1.x * uv2.y - uv1.y * uv2.x);
   if (world_area <= 0.0 || uv_area <= 0.0) return 0.0;
-  const float pixel_spread = 2.0 / (projection[1][1] * float(viewport.y));
+  const float pixel_spread = pixel_footprint(1.0, viewport.y);  // world size of a pixel at distance 1
   const float cone_width = pixel_spread * (distance(camera_position.xyz, ray.origin) + t * length(ray.direction));
   const float cos_incidence = max(abs(dot(normalize(ray.direction), normal)), 0.05);
   return log2(max(cone_width * sqrt(uv_area / world_area) * texture_layer_size / cos_incidence, 1e-8));

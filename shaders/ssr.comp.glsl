@@ -8,19 +8,24 @@
 // level 0 where it meets the pixel's surface. The hit is kept only if it passes every trust test;
 // otherwise the pixel is marked for ray tracing. Depths are positive linear view depths, and every
 // depth tolerance is a fraction of one, so nothing depends on the scene's scale or position.
+// The march reads only the G-buffer (not the lit image): it runs before lighting, so that the frame's
+// ray list and traces can follow it in one GL-CUDA hand-over (docs/ssr.md "March, then colour").
+// Each trusted hit goes to `ssr_hits` (include/ssr_hit.glsl); ssr_colour.comp.glsl fetches its colour
+// once the lit image exists.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
 #include "include/glossy_sampling.glsl"  // glossy reflections: the sampled direction (docs/glossy.md)
 #include "include/pixel_plane.glsl"
+#include "include/ssr_hit.glsl"
 #include "include/tile_list.glsl"  // --reflections auto: only the listed tiles (render/tile_dispatch.h)
 
 layout(binding = 0, rgba8) uniform readonly image2D albedo_reflectivity;
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;
 layout(binding = 2, rgba16f) uniform readonly image2D world_normal;
-layout(binding = 3, rgba16f) uniform readonly image2D lit;
-layout(binding = 4, rgba16f) uniform writeonly image2D reflection;
+layout(binding = 4, rgba16f) uniform writeonly image2D reflection;  // a = distance to a trusted hit
 layout(binding = 5, r8ui) uniform writeonly uimage2D failure_mask;
+layout(binding = 6, rgba32ui) uniform writeonly uimage2D ssr_hits;
 layout(binding = 0) uniform sampler2D depth_pyramid;  // rg = min, max view depth; texelFetch only
 
 // [0] reflective pixels, [1] failed pixels (render_targets.h kPixelCountersBinding).
@@ -81,39 +86,11 @@ float neighbour_plane_distance(ivec2 pixel, vec3 p, vec3 n) {
   return largest;
 }
 
-// The lit colour where the ray met the surface: bilinear between the pixel centres around `point`
-// (inside `hit_pixel`), over the neighbours on the hit's surface only: a neighbour off the hit's
-// plane by more than kSamePlane footprints (the hit pixel's world size) is another surface. (Its
-// normal is not compared too: that cost 0.06 ms of SSR's 0.23 on an H100 for a few ten-thousandths
-// of SSIM, docs/ssr.md.) The hit pixel's own colour alone was the reflection of the pixel centre, up
-// to half a pixel from the hit: textured walls' reflections came out shifted (docs/ssr.md "Where
-// the hit is").
-const float kSamePlane = 0.5;
-vec3 lit_at(vec2 point, ivec2 hit_pixel, vec3 hit_position, vec3 hit_normal, float footprint) {
-  const vec2 q = clamp(point, vec2(hit_pixel), vec2(hit_pixel + 1)) - 0.5;
-  const ivec2 base = ivec2(floor(q));
-  const vec2 f = q - vec2(base);
-  vec3 sum = vec3(0.0);
-  float total = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    const ivec2 corner = ivec2(i & 1, i >> 1);
-    const ivec2 texel = clamp(base + corner, ivec2(0), screen_size - 1);
-    const float w = mix(1.0 - f.x, f.x, float(corner.x)) * mix(1.0 - f.y, f.y, float(corner.y));
-    const vec4 position = imageLoad(world_position, texel);
-    const bool same_surface = texel == hit_pixel ||
-                              (position.w != 0.0 &&
-                               abs(dot(position.xyz - hit_position, hit_normal)) <= kSamePlane * footprint);
-    if (w > 0.0 && same_surface) {
-      sum += w * imageLoad(lit, texel).rgb;
-      total += w;
-    }
-  }
-  return total > 0.0 ? sum / total : imageLoad(lit, hit_pixel).rgb;
-}
-
-// Traces one reflective pixel; writes the reflection it trusts into `result`.
-uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
-  result = vec4(0.0);
+// Traces one reflective pixel; a trusted hit goes into `hit` and its distance from the surface into
+// `distance`.
+uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out SsrHit hit, out float hit_distance) {
+  hit = ssr_no_hit();
+  hit_distance = 0.0;
   const vec3 view_dir = normalize(origin_ws - camera_position.xyz);
   // The mirror direction, or on a glossy surface the sample the ray list traces too; surfaces
   // rougher than the cutoff are left to the rays.
@@ -222,7 +199,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
   const float facing = -dot(hit_normal, ray_ws);
   if (facing <= 0.0) return kFailed;  // back face (the G-buffer normal is never flipped)
   const float hit_depth = -view_from_world(hit_position.xyz).z;
-  const float footprint = hit_depth * 2.0 / (projection[1][1] * float(screen_size.y));
+  const float footprint = pixel_footprint(hit_depth, screen_size.y);
   const float off_plane = neighbour_plane_distance(hit_pixel, hit_position.xyz, hit_normal) / footprint;
   const vec2 hit_center = vec2(hit_pixel) + 0.5;
   const float screen_fraction = length(hit_center - line.p0) / length(vec2(screen_size));
@@ -232,9 +209,10 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out vec4 result) {
                            (1.0 - smoothstep(0.75 * max_screen_fraction, max_screen_fraction, screen_fraction));
   if (confidence < confidence_threshold) return kFailed;
 
-  const float weight = reflection_weight(view_dir, normal_ws, glossy_roughness(roughness), ray_ws);  // 1 for a mirror
-  result = vec4(weight * lit_at(hit_point, hit_pixel, hit_position.xyz, hit_normal, footprint),
-                length(hit_position.xyz - origin_ws));
+  hit.point = hit_point;
+  hit.pixel = hit_pixel;
+  hit.weight = reflection_weight(view_dir, normal_ws, glossy_roughness(roughness), ray_ws);  // 1 for a mirror
+  hit_distance = length(hit_position.xyz - origin_ws);
   return kHit;
 }
 
@@ -255,10 +233,12 @@ void main() {
     const vec4 position = imageLoad(world_position, pixel);
     const float reflectivity = imageLoad(albedo_reflectivity, pixel).a;
     uint outcome = kNotReflective;
-    vec4 result = vec4(0.0);
+    SsrHit hit = ssr_no_hit();
+    float hit_distance = 0.0;
     if (position.w != 0.0 && reflectivity > 0.0)
-      outcome = trace(pixel, position.xyz, normalize(imageLoad(world_normal, pixel).xyz), result);
-    imageStore(reflection, pixel, result);
+      outcome = trace(pixel, position.xyz, normalize(imageLoad(world_normal, pixel).xyz), hit, hit_distance);
+    imageStore(reflection, pixel, vec4(0.0, 0.0, 0.0, hit_distance));  // ssr_colour.comp.glsl adds the colour
+    imageStore(ssr_hits, pixel, pack_ssr_hit(hit));
     imageStore(failure_mask, pixel, uvec4(outcome == kFailed ? 1u : 0u));
     if (outcome != kNotReflective) atomicAdd(group_reflective, 1u);
     if (outcome == kFailed) atomicAdd(group_failed, 1u);

@@ -22,3 +22,5 @@ layout(std140, binding = 0) uniform FrameConstants {
 // rounding is only that of the point itself.
 vec4 clip_from_world(vec3 world) { return relative_view_projection * vec4(world - camera_position.xyz, 1.0); }
 vec3 view_from_world(vec3 world) { return mat3(view) * (world - camera_position.xyz); }
+// World size of one pixel at positive view depth `depth` on a screen `screen_height` pixels tall.
+float pixel_footprint(float depth, int screen_height) { return depth * 2.0 / (projection[1][1] * float(screen_height)); }

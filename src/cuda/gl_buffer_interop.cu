@@ -24,7 +24,12 @@ unsigned int register_flags(InteropAccess access) {
   return cudaGraphicsRegisterFlagsNone;
 }
 
+int open_maps = 0;              // GlBufferInterops mapped now
+std::uint64_t round_trip_count = 0;  // outermost maps so far
+
 }  // namespace
+
+std::uint64_t GlBufferInterop::round_trips() { return round_trip_count; }
 
 GlBufferInterop::GlBufferInterop(std::span<const InteropBuffer> buffers) : resources_(std::make_unique<Resources>()) {
   for (const InteropBuffer& buffer : buffers) {
@@ -41,6 +46,7 @@ GlBufferInterop::GlBufferInterop(std::span<const InteropBuffer> buffers) : resou
 }
 
 GlBufferInterop::~GlBufferInterop() {
+  if (mapped_) --open_maps;
   if (mapped_) cudaGraphicsUnmapResources(static_cast<int>(resources_->handles.size()), resources_->handles.data(), nullptr);
   for (cudaGraphicsResource_t handle : resources_->handles) cudaGraphicsUnregisterResource(handle);
 }
@@ -51,6 +57,7 @@ std::vector<void*> GlBufferInterop::map(void* stream) {
   const int count = static_cast<int>(resources_->handles.size());
   GLINT_CUDA_CHECK(cudaGraphicsMapResources(count, handles, static_cast<cudaStream_t>(stream)));
   mapped_ = true;
+  if (open_maps++ == 0) ++round_trip_count;
   std::vector<void*> pointers(resources_->handles.size(), nullptr);
   for (std::size_t i = 0; i < pointers.size(); ++i) {
     std::size_t bytes = 0;
@@ -62,6 +69,7 @@ std::vector<void*> GlBufferInterop::map(void* stream) {
 void GlBufferInterop::unmap(void* stream) {
   if (!mapped_) return;
   mapped_ = false;
+  --open_maps;
   GLINT_CUDA_CHECK(cudaGraphicsUnmapResources(static_cast<int>(resources_->handles.size()), resources_->handles.data(),
                                               static_cast<cudaStream_t>(stream)));
 }

@@ -14,6 +14,7 @@ GlBufferInterop::GlBufferInterop(std::span<const InteropBuffer>) {
 GlBufferInterop::~GlBufferInterop() = default;
 std::vector<void*> GlBufferInterop::map(void*) { return {}; }
 void GlBufferInterop::unmap(void*) {}
+std::uint64_t GlBufferInterop::round_trips() { return 0; }  // nothing is ever mapped
 
 }  // namespace glint::cuda
 #endif

@@ -20,16 +20,19 @@ DeviceReflectionTrace::DeviceReflectionTrace(rt::DeviceTracing& device, RayHitBu
                                              HitShadowRays* hit_shadows)
     : device_(device), buffers_(buffers), hit_shadows_(hit_shadows), interop_(map_ray_buffers(buffers)) {}
 
-std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, vec3 light_position, GpuTimer* timer) {
+std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
+                                           const std::function<void()>& with_the_rays) {
   // A GPU pass from GL's side, so that the frame's GPU passes hold the CUDA segment too: GL's
-  // commands after the unmap wait for the trace, so the pass spans the mapping, the closest-hit
-  // trace and the hits' shadow rays (docs/perf.md "Seventh round").
+  // commands after the unmap wait for the trace, so the pass spans the mapping, the traces and
+  // the unmapping (docs/perf.md "Seventh round").
   std::optional<GpuTimer::PassScope> timed;
   if (timer != nullptr) timed.emplace(*timer, "device_trace");
   GlPassScope scope("trace");
   // Mapping orders the CUDA stream after the ray-list pass; unmapping orders hit shading after the
-  // trace. Both happen on the GPU: the host only enqueues.
+  // trace. An unmap followed by more CUDA work costs the frame about 0.3 ms on an H100 (docs/perf.md
+  // "Seventh round"), so the frame's other traces (with_the_rays) go inside this mapping.
   cuda::ScopedInteropMap mapped(interop_, device_.stream());
+  if (with_the_rays) with_the_rays();
   const auto* rays = mapped.pointer<const accel::Ray>(0);
   auto* hits = mapped.pointer<accel::Hit>(1);
   const auto* count = mapped.pointer<const std::uint32_t>(2);

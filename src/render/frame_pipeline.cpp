@@ -9,6 +9,7 @@
 #include "render/texture_readback.h"
 
 #include <algorithm>
+#include <functional>
 #include <cstring>
 
 namespace glint::render {
@@ -124,13 +125,15 @@ GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection(
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   const auto slot = static_cast<std::size_t>(frames_rendered_ % kFramesInFlight);
+  // The frame's order (docs/render.md "One hand-over a frame"): everything that needs only the
+  // G-buffer, up to every trace of the frame, comes before lighting; what reads the lit image after.
   RasterShadowSteps shadow;
   if (shadow_rays_) {
     // rt shadows need no cube map: reflection hits cast shadow rays too.
     shadow.cube = settings_.shadows.method == ShadowMethod::hybrid;
-    shadow.after_cube = [&] { shadow_rays_->run(raster_); };
+    shadow.after_cube = [&] { shadow_rays_->write_rays(raster_); };
   }
-  raster_.render(frame, timer, shadow);
+  raster_.render_surfaces(frame, timer, shadow);
   write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
   // --reflections auto: per-tile decisions, or a whole frame of rays or of SSR (adaptive_reflections.h).
   const ReflectionPath path =
@@ -147,19 +150,34 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     ray_traced_->ray_list().set_tiles(
         per_tile ? std::optional(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()}) : std::nullopt);
   }
-  if (ssr_ && path != ReflectionPath::all_rays) {
-    run_timed_pass(timer, "ssr", [&] {
-      ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
-                 raster_.lit(), raster_.frame_constants_buffer()});
-    });
+  const bool marches = ssr_ && path != ReflectionPath::all_rays;
+  const SsrInputs ssr_inputs{raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
+                             raster_.lit(), raster_.frame_constants_buffer()};
+  if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->march(ssr_inputs); });
+  // rt (and auto's all-rays frames): the ray tracer writes every reflective pixel of a cleared
+  // image; hybrid: SSR's failed ones.
+  const bool traces = ray_traced_ && path != ReflectionPath::all_ssr;
+  const bool trace_all = traces && (!ssr_ || path == ReflectionPath::all_rays);
+  if (traces) ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
+  // A device backend traces the shadow rays inside the reflection trace's GL-CUDA hand-over: one
+  // round trip a frame instead of two (each about 0.3 ms on an H100, docs/perf.md "Seventh round").
+  const bool one_hand_over = shadow_rays_ && traces && tracer_->device_tracing() != nullptr;
+  if (shadow_rays_ && !one_hand_over) run_timed_pass(timer, "shadow", [&] { shadow_rays_->trace(); });
+  std::uint32_t listed = 0;
+  if (traces)
+    listed = ray_traced_->trace(raster_, timer,
+                                one_hand_over ? std::function<void()>([&] { shadow_rays_->start_trace(); }) : nullptr);
+  // Unmapped only after the reflection rays: an unmap before more CUDA work is a round trip.
+  if (one_hand_over) shadow_rays_->finish_trace();
+  if (shadow_rays_) run_timed_pass(timer, "shadow", [&] { shadow_rays_->write_mask(raster_); });
+  raster_.light(timer);
+  if (marches) {
+    run_timed_pass(timer, "ssr", [&] { ssr_->shade(ssr_inputs); });
     ssr_->request_counts(slot);  // outside the pass's time: a copy of 8 bytes and a fence
   }
-  if (ray_traced_ && path != ReflectionPath::all_ssr) {
-    // rt (and auto's all-rays frames): the ray tracer writes every reflective pixel of a cleared
-    // image; hybrid: SSR's failed ones.
-    const bool trace_all = !ssr_ || path == ReflectionPath::all_rays;
+  if (traces) {
     if (trace_all) clear_reflection(reflection_image());
-    ray_traced_->run(raster_, trace_all ? 0 : ssr_->failure_mask(), reflection_image(), timer);
+    ray_traced_->shade(raster_, reflection_image(), listed, timer);
   }
   if (adaptive_) adaptive_->finish_frame(slot);
   render_more_reflection_samples(slot);

@@ -2,7 +2,8 @@
 
 namespace glint::render {
 
-std::uint32_t GlReflectionTrace::trace(std::size_t, vec3, GpuTimer* timer) {
+std::uint32_t GlReflectionTrace::trace(std::size_t, vec3, GpuTimer* timer, const std::function<void()>& with_the_rays) {
+  if (with_the_rays) with_the_rays();  // GL passes all: no hand-over to share
   const auto capacity = static_cast<std::uint32_t>(buffers_.capacity());
   run_timed_pass(timer, "trace", [&] {
     gl_.trace_closest_gl(buffers_.ray_buffer(), buffers_.hit_buffer(), buffers_.counter_buffer(), capacity);

@@ -10,7 +10,8 @@ class GlReflectionTrace final : public ReflectionTraceStep {
 public:
   GlReflectionTrace(rt::GlTracing& gl, RayHitBuffers& buffers) : gl_(gl), buffers_(buffers) {}
 
-  std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer) override;
+  std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
+                      const std::function<void()>& with_the_rays) override;
   void finish(std::size_t slot) override { buffers_.request_counts(slot); }
   std::optional<RayTraceFrameStats> stats(std::size_t slot, bool wait) override;
 

@@ -57,6 +57,14 @@ void OcclusionBuffers::bind() const {
 }
 
 void OcclusionBuffers::trace(std::size_t host_count) {
+  start_trace(host_count);
+  finish_trace();
+}
+
+void OcclusionBuffers::finish_trace() { held_map_.reset(); }
+
+void OcclusionBuffers::start_trace(std::size_t host_count) {
+  if (held_map_) fail("{}: a trace started before the last one finished", what_);
   if (gl_) {  // GL dispatches, ordered after the pass that wrote the rays by GL itself
     const auto capacity = static_cast<std::uint32_t>(capacity_);
     if (query_ == RayQuery::closest)
@@ -66,10 +74,10 @@ void OcclusionBuffers::trace(std::size_t host_count) {
     return;
   }
   if (device_) {
-    // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping orders the GL
-    // passes that read the answers after the trace: the host only enqueues. Nobody reads this
-    // trace's GPU time: its ticket is let go.
-    cuda::ScopedInteropMap mapped(*interop_, device_->stream());
+    // Mapping orders the CUDA stream after the pass that wrote the rays, unmapping (finish_trace)
+    // orders the GL passes that read the answers after the trace. Nobody reads this trace's GPU
+    // time: its ticket is let go.
+    const cuda::ScopedInteropMap& mapped = held_map_.emplace(*interop_, device_->stream());
     const rt::GpuTicket ticket =
         query_ == RayQuery::closest
             ? device_->trace_closest_device(mapped.pointer<const accel::Ray>(0), mapped.pointer<accel::Hit>(1),

@@ -52,6 +52,12 @@ public:
   // CPU backends trace the first `host_count` rays after waiting for the GPU; GPU backends trace
   // all `capacity` on the tracer's stream (rays past the frame's count must be empty).
   void trace(std::size_t host_count);
+  // trace() in two halves: a GPU backend keeps the buffers mapped into CUDA from start_trace() to
+  // finish_trace(), so that a caller enqueuing more CUDA work in between (FramePipeline: the
+  // reflection rays) unmaps only after all of it: an unmap followed by more CUDA work costs the
+  // frame a GL-CUDA round trip (docs/perf.md "Seventh round"). Other backends trace in start_trace().
+  void start_trace(std::size_t host_count);
+  void finish_trace();
 
   // GPU backends: rays (pointer 0), answers (1) and count (2) mapped into CUDA on the tracer's
   // stream until the returned map goes, for CUDA work the caller enqueues itself (RayTracedReflections
@@ -77,6 +83,7 @@ private:
   std::uint8_t* mapped_occluded_ = nullptr;  // CPU backends (closest: the accel::Hit array's bytes)
   std::optional<ReadbackRing> ray_fence_;    // CPU backends: the wait for the rays
   std::optional<cuda::GlBufferInterop> interop_;  // GPU backends: rays, answers, count
+  std::optional<cuda::ScopedInteropMap> held_map_;  // GPU backends, from start_trace() to finish_trace()
 };
 
 }  // namespace glint::render

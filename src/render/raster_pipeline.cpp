@@ -48,6 +48,11 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
 }
 
 void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const RasterShadowSteps& shadow) {
+  render_surfaces(frame, timer, shadow);
+  light(timer);
+}
+
+void RasterPipeline::render_surfaces(const FrameState& frame, GpuTimer* timer, const RasterShadowSteps& shadow) {
   // The scene's bounds scan every vertex (deforming meshes move them): once per frame, for both the
   // camera's clip range and the shadow cube's near distance.
   const Aabb world_bounds = scene_->world_bounds();
@@ -79,9 +84,11 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
     shadow_mask_.run(shadow_cube_, settings_);
   }
   if (shadow.after_cube) shadow.after_cube();
-  timed.reset();
-  if (timer != nullptr) timed.emplace(*timer, "light");
-  lighting_.run(gpu_scene_, settings_);
+}
+
+void RasterPipeline::light(GpuTimer* timer) {
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants_buffer_.id());
+  run_timed_pass(timer, "light", [&] { lighting_.run(gpu_scene_, settings_); });
 }
 
 void RasterPipeline::trace_primary_visibility(rt::RayTracer& tracer) {

@@ -54,6 +54,11 @@ public:
   // a timer (inside its begin_frame/end_frame) the passes are timed as "gbuffer" (with the
   // visibility method: the id draw and the compute resolve together), "shadow", "light".
   void render(const FrameState& frame, GpuTimer* timer = nullptr, const RasterShadowSteps& shadow = {});
+  // render() in two halves, for FramePipeline, which traces its rays between them (docs/render.md
+  // "One hand-over a frame"): the G-buffer and the shadow steps, then lighting (which reads the
+  // shadow mask, so whatever finishes the mask goes between).
+  void render_surfaces(const FrameState& frame, GpuTimer* timer, const RasterShadowSteps& shadow);
+  void light(GpuTimer* timer);
 
   // PrimaryVisibility::rt: the tracer whose camera rays make the visibility ids (PrimaryRayPass);
   // it must be built over the scene and outlive the pipeline. Must be called before the first

@@ -55,20 +55,34 @@ std::size_t RayTracedReflections::slot_of(std::uint64_t run) const {
 }
 
 void RayTracedReflections::run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer) {
-  const auto slot = static_cast<std::size_t>(runs_ % kFramesInFlight);
+  list(raster, failure_mask, timer);
+  const std::uint32_t listed = trace(raster, timer);
+  shade(raster, reflection, listed, timer);
+}
+
+void RayTracedReflections::list(const RasterPipeline& raster, GLuint failure_mask, GpuTimer* timer) {
   run_timed_pass(timer, "ray_list", [&] {
     ray_list_.run({raster.albedo_reflectivity(), raster.world_position(), raster.world_normal_roughness(),
                    failure_mask, raster.frame_constants_buffer()});
   });
-  const std::uint32_t max_rays = trace_step_->trace(slot, raster.frame_constants().light_position_range, timer);
+}
+
+std::uint32_t RayTracedReflections::trace(const RasterPipeline& raster, GpuTimer* timer,
+                                          const std::function<void()>& with_the_rays) {
+  const auto slot = static_cast<std::size_t>(runs_ % kFramesInFlight);
+  return trace_step_->trace(slot, raster.frame_constants().light_position_range, timer, with_the_rays);
+}
+
+void RayTracedReflections::shade(const RasterPipeline& raster, GLuint reflection, std::uint32_t listed,
+                                 GpuTimer* timer) {
   run_timed_pass(timer, "hit_shade", [&] {
     // The hits' shadow rays are part of shading them (a CPU backend waits for their list here).
-    if (hit_shadows_) hit_shadows_->run(buffers_, raster.gpu_scene(), raster.frame_constants_buffer(), max_rays);
+    if (hit_shadows_) hit_shadows_->run(buffers_, raster.gpu_scene(), raster.frame_constants_buffer(), listed);
     hit_shading_.run({&raster.gpu_scene(), &raster.shadow_cube(), &raster.settings(), raster.frame_constants_buffer(),
                       reflection, hit_shadows_ ? &hit_shadows_->answers() : nullptr, raster.world_normal_roughness()},
-                     max_rays);
+                     listed);
   });
-  trace_step_->finish(slot);
+  trace_step_->finish(static_cast<std::size_t>(runs_ % kFramesInFlight));
   ++runs_;
 }
 

@@ -29,6 +29,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -74,6 +75,17 @@ public:
   // are numbered 0, 1, ...; the last kFramesInFlight are kept) or frame_stats().
   void run(const RasterPipeline& raster, GLuint failure_mask, GLuint reflection, GpuTimer* timer);
   std::uint64_t runs() const { return runs_; }
+
+  // run()'s three steps apart, in this order, for FramePipeline: the ray list needs only the
+  // G-buffer (and the failure mask), hit shading neither the lit image nor the shadow mask, so the
+  // frame's other traces can go between them in the same GL-CUDA hand-over (docs/render.md "One
+  // hand-over a frame"). trace(): `with_the_rays` is work to issue in the same hand-over, before
+  // the reflection rays (FramePipeline: the shadow rays' trace); a device backend issues it inside
+  // its mapping, a host or gl backend just before its own trace. Returns what shade() needs.
+  void list(const RasterPipeline& raster, GLuint failure_mask, GpuTimer* timer);
+  std::uint32_t trace(const RasterPipeline& raster, GpuTimer* timer,
+                      const std::function<void()>& with_the_rays = {});
+  void shade(const RasterPipeline& raster, GLuint reflection, std::uint32_t listed, GpuTimer* timer);
 
   // The statistics of run `run`, one of the last kFramesInFlight. CPU backends know them at once;
   // with a GPU backend they come from a readback slot and CUDA events: nullopt while the GPU has

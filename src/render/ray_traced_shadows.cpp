@@ -48,9 +48,27 @@ RayTracedShadows::RayTracedShadows(const Scene& scene, int width, int height, Sh
 }
 
 void RayTracedShadows::run(const RasterPipeline& raster) {
+  write_rays(raster);
+  trace();
+  write_mask(raster);
+}
+
+void RayTracedShadows::trace() {
+  start_trace();
+  finish_trace();
+}
+
+void RayTracedShadows::start_trace() {
   GlPassScope scope("shadow_rays");
+  GlPassScope stage("trace");
+  buffers_.start_trace(buffers_.capacity());  // dense: every pixel has a ray, empty or not
+}
+
+void RayTracedShadows::write_rays(const RasterPipeline& raster) {
   if (raster.width() != width_ || raster.height() != height_)
     fail("shadow rays: the raster pipeline is {}x{}, the pass {}x{}", raster.width(), raster.height(), width_, height_);
+  GlPassScope scope("shadow_rays");
+  GlPassScope stage("ray_generation");
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, raster.frame_constants_buffer());
   buffers_.bind();
   glBindImageTexture(kPositionUnit, raster.world_position(), 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
@@ -58,16 +76,20 @@ void RayTracedShadows::run(const RasterPipeline& raster) {
                      kWorldNormalRoughnessFormat);
   glBindImageTexture(kMaskUnit, raster.shadow_mask(), 0, GL_FALSE, 0, GL_READ_ONLY, kShadowMaskFormat);
   ray_program_.use();
-  { GlPassScope stage("ray_generation"); dispatch_over_image(width_, height_); }
+  dispatch_over_image(width_, height_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  check_gl("shadow rays: generation");
+}
 
-  { GlPassScope stage("trace"); buffers_.trace(buffers_.capacity()); }  // dense: every pixel has a ray, empty or not
-
+void RayTracedShadows::write_mask(const RasterPipeline& raster) {
+  GlPassScope scope("shadow_rays");
+  GlPassScope stage("mask");
+  buffers_.bind();
   glBindImageTexture(kMaskUnit, raster.shadow_mask(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kShadowMaskFormat);
   mask_program_.use();
-  { GlPassScope stage("mask"); dispatch_over_image(width_, height_); }
+  dispatch_over_image(width_, height_);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  check_gl("shadow rays");
+  check_gl("shadow rays: mask");
 }
 
 }  // namespace glint::render

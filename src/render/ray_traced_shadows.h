@@ -38,9 +38,19 @@ public:
   RayTracedShadows(const Scene& scene, int width, int height, ShadowMethod method, rt::RayTracer& tracer,
                    float origin_offset_fraction, float depth_edge_fraction);
   // Writes raster.shadow_mask() from this frame's G-buffer (and, hybrid, the cube map's mask, which
-  // must be in shadow_mask() already). Ends with a barrier that makes the mask visible to texture
-  // fetches, image loads and readbacks. With a CPU backend the CPU waits for step 1 in between.
+  // must be in shadow_mask() already): write_rays(), trace(), write_mask(). With a CPU backend the
+  // CPU waits for step 1 in between.
   void run(const RasterPipeline& raster);
+  // The three steps apart, for FramePipeline, which traces the shadow rays in the same GL-CUDA
+  // hand-over as the reflection rays (docs/render.md "One hand-over a frame"). write_mask() ends
+  // with a barrier that makes the mask visible to texture fetches, image loads and readbacks.
+  void write_rays(const RasterPipeline& raster);
+  void trace();
+  // trace() in two halves (OcclusionBuffers::start_trace): FramePipeline starts the shadow rays'
+  // trace inside the reflection trace's mapping and finishes it after the reflection rays.
+  void start_trace();
+  void finish_trace() { buffers_.finish_trace(); }
+  void write_mask(const RasterPipeline& raster);
 
   // CPU backends: the last run's rays and answers (one byte per ray), for tests; glint::Error for
   // a GPU backend, whose rays stay in GPU memory.

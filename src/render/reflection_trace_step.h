@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -39,9 +40,12 @@ public:
 
   // Traces the rays the ray-list pass just wrote for readback slot `slot` (run % kFramesInFlight)
   // into the hit buffer; `light_position` is for the hits' shadow rays where the backend traces them
-  // with the hits. Returns how many list entries hit shading must look at (the list's count when
-  // the host knows it, else the buffers' capacity: the GPU reads the count).
-  virtual std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer) = 0;
+  // with the hits. `with_the_rays` (may be empty) is other work to issue in the same hand-over, before
+  // the reflection rays: the device step issues it inside its mapping and its timed pass, the others
+  // just before their own trace, untimed. Returns how many list entries hit shading must look at
+  // (the list's count when the host knows it, else the buffers' capacity: the GPU reads the count).
+  virtual std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
+                              const std::function<void()>& with_the_rays) = 0;
   // After hit shading was issued: queue what stats() needs of this slot (GPU steps: the counters).
   virtual void finish(std::size_t slot) = 0;
   // The statistics of the run traced into `slot`: nullopt while the GPU has not finished it and

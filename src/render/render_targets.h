@@ -33,6 +33,8 @@ inline constexpr GLenum kLitFormat = GL_RGBA16F;
 inline constexpr GLenum kReflectionFormat = GL_RGBA16F;
 // Failure mask (SsrPass): 1 where a reflective pixel still needs a ray-traced reflection, else 0.
 inline constexpr GLenum kFailureMaskFormat = GL_R8UI;
+// SSR's trusted hits, from its march to its colour fetch (shaders/include/ssr_hit.glsl).
+inline constexpr GLenum kSsrHitFormat = GL_RGBA32UI;
 // Final image (ResolvePass): sRGB-encoded 8-bit colour, a = 1.
 inline constexpr GLenum kFinalFormat = GL_RGBA8;
 

@@ -13,15 +13,16 @@
 namespace glint::render {
 namespace {
 
-// Image units, as declared in ssr.comp.glsl.
+// Image units, as declared in ssr.comp.glsl and ssr_colour.comp.glsl.
 constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit = 3, kReflectionUnit = 4,
-                 kFailureMaskUnit = 5;
+                 kFailureMaskUnit = 5, kHitUnit = 6;
 constexpr GLuint kPyramidUnit = 0;  // texture unit of the depth pyramid (sampler depth_pyramid)
 
 }  // namespace
 
 SsrPass::SsrPass(int width, int height, const SsrSettings& settings)
     : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})),
+      colour_program_(ShaderProgram::from_embedded({"ssr_colour.comp.glsl"})),
       pyramid_(width, height),
       counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ssr counters") {
   set_settings(settings);
@@ -33,6 +34,7 @@ void SsrPass::resize(int width, int height) {
   require_pass_size("ssr", width, height);
   reflection_ = create_texture_2d(kReflectionFormat, width, height);
   failure_mask_ = create_texture_2d(kFailureMaskFormat, width, height);
+  hits_ = create_texture_2d(kSsrHitFormat, width, height);
   if (pyramid_.width() != width || pyramid_.height() != height) pyramid_.resize(width, height);
   width_ = width;
   height_ = height;
@@ -54,12 +56,16 @@ void SsrPass::set_settings(const SsrSettings& settings) {
 }
 
 void SsrPass::run(const SsrInputs& inputs) {
-  GlPassScope scope("ssr");
+  march(inputs);
+  shade(inputs);
+}
+
+void SsrPass::march(const SsrInputs& inputs) {
+  GlPassScope scope("ssr_march");
   require_texture("ssr", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, width_,
                   height_);
   require_texture("ssr", "world_position", inputs.world_position, kWorldPositionFormat, width_, height_);
   require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
-  require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
   require_buffer("ssr", "frame_constants", inputs.frame_constants);
 
   // The pyramid first: the trace reads it as a texture (unit kPyramidUnit).
@@ -73,18 +79,37 @@ void SsrPass::run(const SsrInputs& inputs) {
   glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
   glBindImageTexture(kPositionUnit, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
   glBindImageTexture(kNormalUnit, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
-  glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
   glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
+  glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kSsrHitFormat);
   glBindTextureUnit(kPyramidUnit, pyramid_.texture());
   program_.set_uniform("pyramid_levels", pyramid_.levels());
 
   dispatch_image_or_tiles(program_, tiles_, width_, height_);
-  // Later passes read the outputs as images or textures, the ray-trace step reads the counters as a
-  // buffer, and tests read everything back.
+  // The colour fetch reads the hits and distances, the ray list the failure mask, the ray-trace
+  // step the counters as a buffer, and tests read everything back.
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  check_gl("ssr");
+  check_gl("ssr: march");
+}
+
+void SsrPass::shade(const SsrInputs& inputs) {
+  GlPassScope scope("ssr_colour");
+  require_texture("ssr", "world_position", inputs.world_position, kWorldPositionFormat, width_, height_);
+  require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
+  require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
+  require_buffer("ssr", "frame_constants", inputs.frame_constants);
+
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
+  glBindImageTexture(kPositionUnit, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
+  glBindImageTexture(kNormalUnit, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
+  glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);
+  glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, kReflectionFormat);
+  glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, kSsrHitFormat);
+  dispatch_image_or_tiles(colour_program_, tiles_, width_, height_);
+  // Hit shading and resolve read the reflection as an image or texture, tests read it back.
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  check_gl("ssr: colour");
 }
 
 SsrCounts SsrPass::read_counts() const {

@@ -1,9 +1,13 @@
 #pragma once
-// SsrPass: screen-space reflections for every reflective pixel of the G-buffer. It builds the
-// depth pyramid (DepthPyramidPass: per-pixel depth ranges, min/max mip chain), then one compute
-// dispatch traces each pixel's mirror ray through it hierarchically (a perspective-correct
-// screen-space line, cell by cell, a level up over empty cells and down where the ray meets the
-// depth range) and writes
+// SsrPass: screen-space reflections for every reflective pixel of the G-buffer, in two halves:
+//   march (G-buffer only): the depth pyramid (DepthPyramidPass: per-pixel depth ranges, min/max mip
+//     chain), then one compute dispatch traces each pixel's mirror ray through it hierarchically (a
+//     perspective-correct screen-space line, cell by cell, a level up over empty cells and down
+//     where the ray meets the depth range), judges the hit, and writes the failure mask, the
+//     counters and the trusted hits (hits(), shaders/include/ssr_hit.glsl);
+//   shade (needs the lit image): the colour where each trusted hit's ray met the surface.
+// FramePipeline marches before lighting, so that the ray list and every trace of the frame share one
+// GL-CUDA hand-over, and shades after it; run() does both at once. Together they write
 //   reflection (kReflectionFormat): rgb = lit colour at the trusted hit, a = world distance from the
 //                                   surface to the hit; 0 where the pixel is not reflective or failed;
 //   failure mask (kFailureMaskFormat): 1 where a reflective pixel needs a ray-traced reflection;
@@ -57,13 +61,19 @@ public:
   void set_tile_list(const std::optional<TileListDispatch>& tiles) { tiles_ = tiles; }
   const SsrSettings& settings() const { return settings_; }
 
-  // Clears the counters and dispatches the march. Inputs are checked (ids, sizes, formats) and a
-  // mismatch is a glint::Error. Ends with a memory barrier that makes the outputs visible to any
-  // later image load, texture fetch, readback or buffer read.
+  // march() then shade(). Inputs are checked (ids, sizes, formats) and a mismatch is a glint::Error.
+  // Each ends with a memory barrier that makes its outputs visible to any later image load, texture
+  // fetch, readback or buffer read.
   void run(const SsrInputs& inputs);
+  // Clears the counters, builds the pyramid and marches: the failure mask, the counters, the hits,
+  // and the reflection image's distances (its rgb 0). inputs.lit is not read.
+  void march(const SsrInputs& inputs);
+  // The colour at the last march's trusted hits from inputs.lit, into the reflection's rgb.
+  void shade(const SsrInputs& inputs);
 
   GLuint reflection() const { return reflection_.id(); }
   GLuint failure_mask() const { return failure_mask_.id(); }
+  GLuint hits() const { return hits_.id(); }  // kSsrHitFormat
   GLuint counters_buffer() const { return counters_.id(); }
   const DepthPyramidPass& depth_pyramid() const { return pyramid_; }
   int width() const { return width_; }
@@ -79,13 +89,15 @@ public:
   std::optional<SsrCounts> requested_counts(std::size_t slot, bool wait);
 
 private:
-  ShaderProgram program_;
+  ShaderProgram program_;         // ssr.comp.glsl: the march
+  ShaderProgram colour_program_;  // ssr_colour.comp.glsl: the colour fetch
   DepthPyramidPass pyramid_;
   SsrSettings settings_;
   int width_ = 0;
   int height_ = 0;
   GlTexture reflection_;
   GlTexture failure_mask_;
+  GlTexture hits_;
   GlBuffer counters_;
   ReadbackRing counts_readback_;
   std::optional<TileListDispatch> tiles_;
