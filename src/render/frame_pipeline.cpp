@@ -135,21 +135,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   }
   raster_.render_surfaces(frame, timer, shadow);
   write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
-  // --reflections auto: per-tile decisions, or a whole frame of rays or of SSR (adaptive_reflections.h).
-  const ReflectionPath path =
-      adaptive_ ? adaptive_->begin_frame(frame.camera, slot, ray_traced_->runs()) : ReflectionPath::per_tile;
-  if (adaptive_) {
-    const bool per_tile = path == ReflectionPath::per_tile;
-    // Before SSR, which overwrites the failure mask the classification reads as last frame's.
-    if (per_tile)
-      run_timed_pass(timer, "classify", [&] {
-        adaptive_->classify({raster_.albedo_reflectivity(), raster_.world_position(), ssr_->failure_mask(),
-                             ssr_->reflection(), raster_.frame_constants().view_projection});
-      });
-    ssr_->set_tile_list(per_tile ? std::optional(adaptive_->pass().ssr_tiles()) : std::nullopt);
-    ray_traced_->ray_list().set_tiles(
-        per_tile ? std::optional(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()}) : std::nullopt);
-  }
+  const ReflectionPath path = choose_reflection_path(frame, slot, timer);
   const bool marches = ssr_ && path != ReflectionPath::all_rays;
   const SsrInputs ssr_inputs{raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
                              raster_.lit(), raster_.frame_constants_buffer()};
@@ -159,16 +145,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   const bool traces = ray_traced_ && path != ReflectionPath::all_ssr;
   const bool trace_all = traces && (!ssr_ || path == ReflectionPath::all_rays);
   if (traces) ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
-  // A device backend traces the shadow rays inside the reflection trace's GL-CUDA hand-over: one
-  // round trip a frame instead of two (each about 0.3 ms on an H100, docs/perf.md "Seventh round").
-  const bool one_hand_over = shadow_rays_ && traces && tracer_->device_tracing() != nullptr;
-  if (shadow_rays_ && !one_hand_over) run_timed_pass(timer, "shadow", [&] { shadow_rays_->trace(); });
-  std::uint32_t listed = 0;
-  if (traces)
-    listed = ray_traced_->trace(raster_, timer,
-                                one_hand_over ? std::function<void()>([&] { shadow_rays_->start_trace(); }) : nullptr);
-  // Unmapped only after the reflection rays: an unmap before more CUDA work is a round trip.
-  if (one_hand_over) shadow_rays_->finish_trace();
+  const std::uint32_t listed = trace_rays(traces, timer);
   if (shadow_rays_) run_timed_pass(timer, "shadow", [&] { shadow_rays_->write_mask(raster_); });
   raster_.light(timer);
   if (marches) {
@@ -195,6 +172,36 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   if (linear_readback_)
     linear_readback_->capture_texture(slot, resolve_.linear_image(), GL_RGBA, GL_FLOAT, linear_readback_->slot_bytes());
   ++frames_rendered_;
+}
+
+ReflectionPath FramePipeline::choose_reflection_path(const FrameState& frame, std::size_t slot, GpuTimer* timer) {
+  if (!adaptive_) return ReflectionPath::per_tile;
+  // --reflections auto: per-tile decisions, or a whole frame of rays or of SSR (adaptive_reflections.h).
+  const ReflectionPath path = adaptive_->begin_frame(frame.camera, slot, ray_traced_->runs());
+  const bool per_tile = path == ReflectionPath::per_tile;
+  // Before SSR, which overwrites the failure mask the classification reads as last frame's.
+  if (per_tile)
+    run_timed_pass(timer, "classify", [&] {
+      adaptive_->classify({raster_.albedo_reflectivity(), raster_.world_position(), ssr_->failure_mask(),
+                           ssr_->reflection(), raster_.frame_constants().view_projection});
+    });
+  ssr_->set_tile_list(per_tile ? std::optional(adaptive_->pass().ssr_tiles()) : std::nullopt);
+  ray_traced_->ray_list().set_tiles(
+      per_tile ? std::optional(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()}) : std::nullopt);
+  return path;
+}
+
+std::uint32_t FramePipeline::trace_rays(bool reflection_rays, GpuTimer* timer) {
+  // A device backend traces the shadow rays inside the reflection trace's GL-CUDA hand-over: one
+  // round trip a frame instead of two (each about 0.3 ms on an H100, docs/perf.md "Seventh round").
+  const bool one_hand_over = shadow_rays_ && reflection_rays && tracer_->device_tracing() != nullptr;
+  if (shadow_rays_ && !one_hand_over) run_timed_pass(timer, "shadow", [&] { shadow_rays_->trace(); });
+  if (!reflection_rays) return 0;
+  const std::uint32_t listed = ray_traced_->trace(
+      raster_, timer, one_hand_over ? std::function<void()>([&] { shadow_rays_->start_trace(); }) : nullptr);
+  // Unmapped only after the reflection rays: an unmap before more CUDA work is a round trip too.
+  if (one_hand_over) shadow_rays_->finish_trace();
+  return listed;
 }
 
 void FramePipeline::render_more_reflection_samples(std::size_t slot) {

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Session 6's GPU calls (issue 19: one GL-CUDA hand-over a frame): h (tests, frames and scopes against
 # the previous binary, glint-base), i (trace times with and without the hits' shadow rays), j (auto's
-# bench). Output: $OUT/r-<step>.tar.xz
+# bench), k (tests after the refactor; auto's bench with rt shadows). Output: $OUT/r-<step>.tar.xz
 set -u
 STEP=$1
 R=/tmp/r-$STEP; rm -rf $R; mkdir -p $R
@@ -62,4 +62,15 @@ if [ "$STEP" = j ]; then  # issue 21: auto with the hits' shadow rays in its ray
       --width 1280 --height 720 --warmup 3 --no-plot --out $R/adaptive-sponza-$bin > $R/adaptive-sponza-$bin.log 2>&1; echo "$bin adaptive sponza rc=$?"
   done
   rm -rf $R/adaptive*/cells/*/ $R/adaptive*/images
+fi
+if [ "$STEP" = k ]; then  # after the refactor: GPU tests; auto with rt shadows, this binary and the previous one
+  [ -x /tmp/w/glint-base ] || { xz -dc .gpu-base.xz > /tmp/w/glint-base; chmod +x /tmp/w/glint-base; }
+  ( cd $R && timeout 200 glint_tests --gtest_brief=1 --gtest_filter='*HybridPipeline*:*RayTraced*:GoldenImage*:*Adaptive*:RenderCli*:RenderScopes*:*Ssr*:*Deform*:*PoseMesh*:*DeterministicFrames*' > tests.log 2>&1; echo "tests rc=$?" >> tests.log )
+  grep -E "FAILED|PASSED|tests from|rc=|golden" $R/tests.log | tail -8
+  for bin in new base; do g=glint; [ $bin = base ] && g=/tmp/w/glint-base
+    timeout 150 $g bench --experiment adaptive --scene atrium --simple-scene atrium-simple --backends cuda --shadows rt \
+      --gbuffer visibility --width 1280 --height 720 --warmup 3 --no-plot --out $R/adaptive-rt-$bin > $R/adaptive-rt-$bin.log 2>&1; echo "$bin adaptive rc=$?"
+  done
+  rm -rf $R/adaptive*/cells/*/ $R/adaptive*/images
+  for bin in new base; do echo "== $bin"; grep -E "^## |^\| (rt|ssr|hybrid|auto) " $R/adaptive-rt-$bin/report.md; done
 fi
