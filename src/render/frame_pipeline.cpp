@@ -125,8 +125,6 @@ GLuint FramePipeline::reflection_image() const { return ssr_ ? ssr_->reflection(
 
 void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   const auto slot = static_cast<std::size_t>(frames_rendered_ % kFramesInFlight);
-  // The frame's order (docs/render.md "One hand-over a frame"): everything that needs only the
-  // G-buffer, up to every trace of the frame, comes before lighting; what reads the lit image after.
   RasterShadowSteps shadow;
   if (shadow_rays_) {
     // rt shadows need no cube map: reflection hits cast shadow rays too.
@@ -137,21 +135,40 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
   const ReflectionPath path = choose_reflection_path(frame, slot, timer);
   const bool marches = ssr_ && path != ReflectionPath::all_rays;
-  const SsrInputs ssr_inputs{raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
-                             raster_.lit(), raster_.frame_constants_buffer()};
-  if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->march(ssr_inputs); });
   // rt (and auto's all-rays frames): the ray tracer writes every reflective pixel of a cleared
   // image; hybrid: SSR's failed ones.
   const bool traces = ray_traced_ && path != ReflectionPath::all_ssr;
   const bool trace_all = traces && (!ssr_ || path == ReflectionPath::all_rays);
-  if (traces) ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
-  const std::uint32_t listed = trace_rays(traces, timer);
-  if (shadow_rays_) run_timed_pass(timer, "shadow", [&] { shadow_rays_->write_mask(raster_); });
-  raster_.light(timer);
-  if (marches) {
-    run_timed_pass(timer, "ssr", [&] { ssr_->shade(ssr_inputs); });
-    ssr_->request_counts(slot);  // outside the pass's time: a copy of 8 bytes and a fence
+  const SsrInputs ssr_inputs{raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
+                             raster_.lit(), raster_.frame_constants_buffer()};
+  // A device backend that traces shadow and reflection rays traces both in one GL-CUDA hand-over
+  // (about 0.3 ms each on an H100, docs/perf.md "Seventh round"): what needs only the G-buffer, up
+  // to the traces, runs before lighting (docs/render.md "One hand-over a frame"). Otherwise the
+  // frame keeps the paper's order, where SSR marches and fetches its colours in one dispatch.
+  const bool one_hand_over = shadow_rays_ && traces && tracer_->device_tracing() != nullptr;
+  std::uint32_t listed = 0;
+  if (one_hand_over) {
+    if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->march(ssr_inputs); });
+    ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
+    listed = ray_traced_->trace(raster_, timer, [&] { shadow_rays_->start_trace(); });
+    shadow_rays_->finish_trace();  // after the reflection rays: an unmap before more CUDA work is a round trip
+    run_timed_pass(timer, "shadow", [&] { shadow_rays_->write_mask(raster_); });
+    raster_.light(timer);
+    if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->shade(ssr_inputs); });
+  } else {
+    if (shadow_rays_)
+      run_timed_pass(timer, "shadow", [&] {
+        shadow_rays_->trace();
+        shadow_rays_->write_mask(raster_);
+      });
+    raster_.light(timer);
+    if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->run(ssr_inputs); });
+    if (traces) {
+      ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
+      listed = ray_traced_->trace(raster_, timer);
+    }
   }
+  if (marches) ssr_->request_counts(slot);  // outside the passes' time: a copy of 8 bytes and a fence
   if (traces) {
     if (trace_all) clear_reflection(reflection_image());
     ray_traced_->shade(raster_, reflection_image(), listed, timer);
@@ -189,19 +206,6 @@ ReflectionPath FramePipeline::choose_reflection_path(const FrameState& frame, st
   ray_traced_->ray_list().set_tiles(
       per_tile ? std::optional(RayListTiles{adaptive_->pass().ray_tiles(), adaptive_->max_rays()}) : std::nullopt);
   return path;
-}
-
-std::uint32_t FramePipeline::trace_rays(bool reflection_rays, GpuTimer* timer) {
-  // A device backend traces the shadow rays inside the reflection trace's GL-CUDA hand-over: one
-  // round trip a frame instead of two (each about 0.3 ms on an H100, docs/perf.md "Seventh round").
-  const bool one_hand_over = shadow_rays_ && reflection_rays && tracer_->device_tracing() != nullptr;
-  if (shadow_rays_ && !one_hand_over) run_timed_pass(timer, "shadow", [&] { shadow_rays_->trace(); });
-  if (!reflection_rays) return 0;
-  const std::uint32_t listed = ray_traced_->trace(
-      raster_, timer, one_hand_over ? std::function<void()>([&] { shadow_rays_->start_trace(); }) : nullptr);
-  // Unmapped only after the reflection rays: an unmap before more CUDA work is a round trip too.
-  if (one_hand_over) shadow_rays_->finish_trace();
-  return listed;
 }
 
 void FramePipeline::render_more_reflection_samples(std::size_t slot) {

@@ -1,9 +1,10 @@
 #pragma once
 // One frame of glint's renderer: the raster passes (G-buffer, shadow, light), SSR (ssr and hybrid
 // modes), the ray-traced complement (hybrid: SSR-failed pixels; rt: every reflective pixel; see
-// ray_traced_reflections.h), then resolve (fade, blur, composite, tone map). What needs only the
-// G-buffer (SSR's march, the ray list, every trace) runs before lighting, so that a device
-// backend's traces share one GL-CUDA hand-over (docs/render.md "One hand-over a frame"). Every GPU
+// ray_traced_reflections.h), then resolve (fade, blur, composite, tone map). When a device backend
+// traces shadow and reflection rays, what needs only the G-buffer (SSR's march, the ray list, every
+// trace) runs before lighting, so that the traces share one GL-CUDA hand-over (docs/render.md "One
+// hand-over a frame"). Every GPU
 // pass is timed under its name in kFramePassNames when a GpuTimer is given; the frame's final image
 // stays on the GPU until read_final() copies it out.
 //
@@ -164,11 +165,8 @@ private:
   GLuint reflection_image() const;  // what resolve reads
   // --spp N > 1 (docs/glossy.md): samples 1 .. N-1 of the reflections after the frame's first one
   // (untimed), averaged with it into reflection_image(); their rays counted into sampled_ray_stats_.
-  // render()'s steps: auto's choice for the frame (and its tile classification); the shadow rays'
-  // and the reflection rays' traces, in one GL-CUDA hand-over on a device backend (returns what hit
-  // shading needs: RayTracedReflections::trace; 0 without reflection rays).
+  // auto's choice for the frame, after its tile classification (per_tile without auto).
   ReflectionPath choose_reflection_path(const FrameState& frame, std::size_t slot, GpuTimer* timer);
-  std::uint32_t trace_rays(bool reflection_rays, GpuTimer* timer);
   void render_more_reflection_samples(std::size_t slot);
 
   const Scene* scene_;

@@ -22,6 +22,7 @@ constexpr GLuint kPyramidUnit = 0;  // texture unit of the depth pyramid (sample
 
 SsrPass::SsrPass(int width, int height, const SsrSettings& settings)
     : program_(ShaderProgram::from_embedded({"ssr.comp.glsl"})),
+      march_program_(ShaderProgram::from_embedded({"ssr_march.comp.glsl"})),
       colour_program_(ShaderProgram::from_embedded({"ssr_colour.comp.glsl"})),
       pyramid_(width, height),
       counts_readback_(kFramesInFlight, 2 * sizeof(std::uint32_t), "ssr counters") {
@@ -44,24 +45,31 @@ void SsrPass::resize(int width, int height) {
 void SsrPass::set_settings(const SsrSettings& settings) {
   validate(settings);
   settings_ = settings;
-  program_.set_uniform("max_steps", settings.max_steps);
-  program_.set_uniform("thickness", settings.thickness);
-  program_.set_uniform("max_distance", settings.max_distance);
-  program_.set_uniform("confidence_threshold", settings.confidence_threshold);
-  program_.set_uniform("edge_fade", settings.edge_fade);
-  program_.set_uniform("min_hit_cosine", settings.min_hit_cosine);
-  program_.set_uniform("silhouette_footprints", settings.silhouette_footprints);
-  program_.set_uniform("max_screen_fraction", settings.max_screen_fraction);
-  program_.set_uniform("empty_behind", settings.empty_behind);
+  for (ShaderProgram* program : {&program_, &march_program_}) {
+    program->set_uniform("max_steps", settings.max_steps);
+    program->set_uniform("thickness", settings.thickness);
+    program->set_uniform("max_distance", settings.max_distance);
+    program->set_uniform("confidence_threshold", settings.confidence_threshold);
+    program->set_uniform("edge_fade", settings.edge_fade);
+    program->set_uniform("min_hit_cosine", settings.min_hit_cosine);
+    program->set_uniform("silhouette_footprints", settings.silhouette_footprints);
+    program->set_uniform("max_screen_fraction", settings.max_screen_fraction);
+    program->set_uniform("empty_behind", settings.empty_behind);
+  }
 }
 
 void SsrPass::run(const SsrInputs& inputs) {
-  march(inputs);
-  shade(inputs);
+  GlPassScope scope("ssr");
+  require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
+  dispatch_march(inputs, /*colour_in_march=*/true);
 }
 
 void SsrPass::march(const SsrInputs& inputs) {
   GlPassScope scope("ssr_march");
+  dispatch_march(inputs, /*colour_in_march=*/false);
+}
+
+void SsrPass::dispatch_march(const SsrInputs& inputs, bool colour_in_march) {
   require_texture("ssr", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, width_,
                   height_);
   require_texture("ssr", "world_position", inputs.world_position, kWorldPositionFormat, width_, height_);
@@ -79,15 +87,19 @@ void SsrPass::march(const SsrInputs& inputs) {
   glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
   glBindImageTexture(kPositionUnit, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
   glBindImageTexture(kNormalUnit, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
+  // Bound either way (a declared image unit must hold an image of its format); read only with the colour.
+  glBindImageTexture(kLitUnit, colour_in_march ? inputs.lit : reflection_.id(), 0, GL_FALSE, 0, GL_READ_ONLY,
+                     kLitFormat);
   glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
   glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kSsrHitFormat);
   glBindTextureUnit(kPyramidUnit, pyramid_.texture());
-  program_.set_uniform("pyramid_levels", pyramid_.levels());
-
-  dispatch_image_or_tiles(program_, tiles_, width_, height_);
-  // The colour fetch reads the hits and distances, the ray list the failure mask, the ray-trace
-  // step the counters as a buffer, and tests read everything back.
+  ShaderProgram& program = colour_in_march ? program_ : march_program_;
+  program.set_uniform("pyramid_levels", pyramid_.levels());
+  dispatch_image_or_tiles(program, tiles_, width_, height_);
+  // Later passes read the outputs as images or textures (the colour fetch the hits and distances,
+  // the ray list the failure mask), the ray-trace step reads the counters as a buffer, and tests
+  // read everything back.
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   check_gl("ssr: march");

@@ -6,8 +6,10 @@
 //     where the ray meets the depth range), judges the hit, and writes the failure mask, the
 //     counters and the trusted hits (hits(), shaders/include/ssr_hit.glsl);
 //   shade (needs the lit image): the colour where each trusted hit's ray met the surface.
-// FramePipeline marches before lighting, so that the ray list and every trace of the frame share one
-// GL-CUDA hand-over, and shades after it; run() does both at once. Together they write
+// When a device backend traces shadow and reflection rays, FramePipeline marches before lighting, so
+// that the ray list and every trace of the frame share one GL-CUDA hand-over, and shades after it;
+// otherwise run() does both in one dispatch after lighting (cheaper: no hits written and read back).
+// Together they write
 //   reflection (kReflectionFormat): rgb = lit colour at the trusted hit, a = world distance from the
 //                                   surface to the hit; 0 where the pixel is not reflective or failed;
 //   failure mask (kFailureMaskFormat): 1 where a reflective pixel needs a ray-traced reflection;
@@ -61,12 +63,14 @@ public:
   void set_tile_list(const std::optional<TileListDispatch>& tiles) { tiles_ = tiles; }
   const SsrSettings& settings() const { return settings_; }
 
-  // march() then shade(). Inputs are checked (ids, sizes, formats) and a mismatch is a glint::Error.
-  // Each ends with a memory barrier that makes its outputs visible to any later image load, texture
-  // fetch, readback or buffer read.
+  // Clears the counters, builds the pyramid and marches, fetching each trusted hit's colour as it
+  // goes: march() and shade() in one dispatch, for a frame with no hand-over to share (docs/ssr.md
+  // "March, then colour"). Inputs are checked (ids, sizes, formats) and a mismatch is a
+  // glint::Error. Each of the three ends with a memory barrier that makes its outputs visible to any
+  // later image load, texture fetch, readback or buffer read.
   void run(const SsrInputs& inputs);
-  // Clears the counters, builds the pyramid and marches: the failure mask, the counters, the hits,
-  // and the reflection image's distances (its rgb 0). inputs.lit is not read.
+  // The march alone: the failure mask, the counters, the hits, and the reflection image's distances
+  // (its rgb 0). inputs.lit is not read, so it can run before lighting.
   void march(const SsrInputs& inputs);
   // The colour at the last march's trusted hits from inputs.lit, into the reflection's rgb.
   void shade(const SsrInputs& inputs);
@@ -89,7 +93,10 @@ public:
   std::optional<SsrCounts> requested_counts(std::size_t slot, bool wait);
 
 private:
-  ShaderProgram program_;         // ssr.comp.glsl: the march
+  void dispatch_march(const SsrInputs& inputs, bool colour_in_march);
+
+  ShaderProgram program_;         // ssr.comp.glsl: the march with the colour fetch (run)
+  ShaderProgram march_program_;   // ssr_march.comp.glsl: the march alone (march)
   ShaderProgram colour_program_;  // ssr_colour.comp.glsl: the colour fetch
   DepthPyramidPass pyramid_;
   SsrSettings settings_;

@@ -184,6 +184,24 @@ TEST_P(SsrPassTest, TheColourOfAHitIsTakenWhereTheRayMeetsTheSurface) {
   EXPECT_LE(largest, 0.003f);
 }
 
+// FramePipeline's order around one GL-CUDA hand-over (docs/ssr.md "March, then colour"): the march
+// before lighting, without the lit image, and the colour fetch after it give run()'s outputs exactly.
+TEST_P(SsrPassTest, MarchThenShadeEqualsOneDispatch) {
+  FloorAndBox setup(0.4f);  // the box reflects too
+  for (testing::SyntheticQuad& quad : setup.scene.quads)
+    if (quad.object == setup.box) quad.lit_per_x = vec3(0.25f, 0.0f, 0.0f);  // a colour that varies in a pixel
+  const SsrResult one = testing::run_ssr(setup.scene, setup.camera, kWidth, kHeight, 7, GetParam());
+  const SsrResult split = testing::run_ssr(setup.scene, setup.camera, kWidth, kHeight, 7, GetParam(),
+                                           testing::SsrDispatch::march_then_shade);
+  int hits = 0;
+  for (std::size_t i = 0; i < one.mask.size(); ++i) hits += reflective(one.cpu, i) && one.mask[i] == 0;
+  ASSERT_GE(hits, 40) << "the scene must give SSR many trusted hits";
+  EXPECT_EQ(split.mask, one.mask);
+  EXPECT_EQ(split.reflection, one.reflection);
+  EXPECT_EQ(split.counts.reflective, one.counts.reflective);
+  EXPECT_EQ(split.counts.failed, one.counts.failed);
+}
+
 TEST_P(SsrPassTest, CountersMatchTheMaskAndNonReflectivePixelsNeverFail) {
   const FloorAndBox setup(0.4f);  // the box reflects too: its rays head back past the camera
   const SsrResult r = run_ssr(setup.scene, setup.camera, GetParam());

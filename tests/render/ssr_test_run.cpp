@@ -14,11 +14,19 @@ SyntheticFrame synthetic_frame(const SyntheticScene& scene, const SyntheticCamer
 }
 
 SsrRun run_ssr(const SyntheticScene& scene, const SyntheticCamera& camera, int width, int height, int frame,
-               const SsrSettings& settings) {
+               const SsrSettings& settings, SsrDispatch dispatch) {
   SyntheticFrame input = synthetic_frame(scene, camera, width, height, frame);
   SsrPass pass(width, height, settings);
-  pass.run({input.gpu.albedo_reflectivity.id(), input.gpu.world_position.id(), input.gpu.world_normal.id(),
-            input.gpu.lit.id(), input.gpu.frame_constants.id()});
+  const SsrInputs inputs{input.gpu.albedo_reflectivity.id(), input.gpu.world_position.id(),
+                         input.gpu.world_normal.id(), input.gpu.lit.id(), input.gpu.frame_constants.id()};
+  if (dispatch == SsrDispatch::run) {
+    pass.run(inputs);
+  } else {
+    SsrInputs without_lit = inputs;
+    without_lit.lit = 0;  // the march must not need it: it runs before lighting
+    pass.march(without_lit);
+    pass.shade(inputs);
+  }
   SsrRun run;
   run.constants = input.constants;
   run.cpu = std::move(input.cpu);

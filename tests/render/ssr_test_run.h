@@ -28,9 +28,12 @@ struct SsrRun {
   std::vector<std::uint8_t> mask;  // SsrPass::failure_mask()
   SsrCounts counts;
 };
+// How run_ssr dispatches SsrPass: run() (one dispatch), or march() without the lit image and then
+// shade() (FramePipeline's order around one GL-CUDA hand-over).
+enum class SsrDispatch { run, march_then_shade };
 // SsrPass with `settings` over synthetic_frame(scene, camera, width, height, frame).
 SsrRun run_ssr(const SyntheticScene& scene, const SyntheticCamera& camera, int width, int height, int frame,
-               const SsrSettings& settings = {});
+               const SsrSettings& settings = {}, SsrDispatch dispatch = SsrDispatch::run);
 
 // Pixel i shows a surface that reflects (SSR marches it).
 bool reflective(const CpuGBuffer& gbuffer, std::size_t i);

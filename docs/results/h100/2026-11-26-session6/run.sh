@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Session 6's GPU calls (issue 19: one GL-CUDA hand-over a frame): h (tests, frames and scopes against
 # the previous binary, glint-base), i (trace times with and without the hits' shadow rays), j (auto's
-# bench), k (tests after the refactor; auto's bench with rt shadows). Output: $OUT/r-<step>.tar.xz
+# bench), k (tests after the refactor; auto's bench with rt shadows). h ran three times; its files
+# here are the last run's, on the final tree. Output: $OUT/r-<step>.tar.xz
 set -u
 STEP=$1
 R=/tmp/r-$STEP; rm -rf $R; mkdir -p $R
