@@ -146,10 +146,11 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   // to the traces, runs before lighting (docs/render.md "One hand-over a frame"). Otherwise the
   // frame keeps the paper's order, where SSR marches and fetches its colours in one dispatch.
   const bool one_hand_over = shadow_rays_ && traces && tracer_->device_tracing() != nullptr;
+  const auto list_rays = [&] { ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer); };
   std::uint32_t listed = 0;
   if (one_hand_over) {
     if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->march(ssr_inputs); });
-    ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
+    list_rays();
     listed = ray_traced_->trace(raster_, timer, [&] { shadow_rays_->start_trace(); });
     shadow_rays_->finish_trace();  // after the reflection rays: an unmap before more CUDA work is a round trip
     run_timed_pass(timer, "shadow", [&] { shadow_rays_->write_mask(raster_); });
@@ -164,7 +165,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     raster_.light(timer);
     if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->run(ssr_inputs); });
     if (traces) {
-      ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer);
+      list_rays();
       listed = ray_traced_->trace(raster_, timer);
     }
   }

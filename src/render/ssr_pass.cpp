@@ -35,7 +35,8 @@ void SsrPass::resize(int width, int height) {
   require_pass_size("ssr", width, height);
   reflection_ = create_texture_2d(kReflectionFormat, width, height);
   failure_mask_ = create_texture_2d(kFailureMaskFormat, width, height);
-  hits_ = create_texture_2d(kSsrHitFormat, width, height);
+  // The hits are made by the first march() (only frames that split SSR need them: 16 bytes a pixel).
+  if (hits_.id() != 0) hits_ = create_texture_2d(kSsrHitFormat, width, height);
   if (pyramid_.width() != width || pyramid_.height() != height) pyramid_.resize(width, height);
   width_ = width;
   height_ = height;
@@ -92,7 +93,10 @@ void SsrPass::dispatch_march(const SsrInputs& inputs, bool colour_in_march) {
                      kLitFormat);
   glBindImageTexture(kReflectionUnit, reflection_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kReflectionFormat);
   glBindImageTexture(kFailureMaskUnit, failure_mask_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kFailureMaskFormat);
-  glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kSsrHitFormat);
+  if (!colour_in_march) {
+    if (hits_.id() == 0) hits_ = create_texture_2d(kSsrHitFormat, width_, height_);
+    glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kSsrHitFormat);
+  }
   glBindTextureUnit(kPyramidUnit, pyramid_.texture());
   ShaderProgram& program = colour_in_march ? program_ : march_program_;
   program.set_uniform("pyramid_levels", pyramid_.levels());
@@ -107,6 +111,7 @@ void SsrPass::dispatch_march(const SsrInputs& inputs, bool colour_in_march) {
 
 void SsrPass::shade(const SsrInputs& inputs) {
   GlPassScope scope("ssr_colour");
+  if (hits_.id() == 0) fail("ssr: shade() needs a march() first");
   require_texture("ssr", "world_position", inputs.world_position, kWorldPositionFormat, width_, height_);
   require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
   require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);

@@ -72,12 +72,13 @@ public:
   // The march alone: the failure mask, the counters, the hits, and the reflection image's distances
   // (its rgb 0). inputs.lit is not read, so it can run before lighting.
   void march(const SsrInputs& inputs);
-  // The colour at the last march's trusted hits from inputs.lit, into the reflection's rgb.
+  // The colour at the last march's trusted hits from inputs.lit, into the reflection's rgb
+  // (glint::Error before any march()).
   void shade(const SsrInputs& inputs);
 
   GLuint reflection() const { return reflection_.id(); }
   GLuint failure_mask() const { return failure_mask_.id(); }
-  GLuint hits() const { return hits_.id(); }  // kSsrHitFormat
+  GLuint hits() const { return hits_.id(); }  // kSsrHitFormat; 0 until the first march()
   GLuint counters_buffer() const { return counters_.id(); }
   const DepthPyramidPass& depth_pyramid() const { return pyramid_; }
   int width() const { return width_; }
