@@ -1,4 +1,5 @@
 #version 450 core
+#include "include/compute_raster_extensions.glsl"
 // Compute rasteriser, last step (ComputeVisibilityPass::run): each pixel's kept triangle becomes the
 // id VisibilityIdPass writes, stored into the id image by a compute dispatch (all SMs; the draw that
 // also writes the depth runs on the graphics SMs and only when the depth is read:

@@ -1,5 +1,5 @@
 #version 450 core
-#extension GL_ARB_gpu_shader_int64 : require
+#include "include/compute_raster_extensions.glsl"
 // Compute rasteriser, deferred triangles (ComputeVisibilityPass, both rounds): one invocation per
 // triangle the per-triangle dispatch left (large on screen, or reaching in front of the near plane or
 // out of the guard band). Round 0 clips it to the near plane and the guard band when needed, fans

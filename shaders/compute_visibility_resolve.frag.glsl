@@ -1,4 +1,5 @@
 #version 450 core
+#include "include/compute_raster_extensions.glsl"
 // Compute rasteriser, the depth on demand (ComputeVisibilityPass::write_depth): a full-screen draw
 // that writes the kept depth into the depth target (1 where nothing was drawn, the id draw's clear)
 // and the id again (the same as compute_visibility_ids.comp.glsl stored), so the targets are as the
@@ -15,5 +16,5 @@ void main() {
   const ivec2 pixel = ivec2(gl_FragCoord.xy);
   const uint i = uint(pixel.y * viewport.x + pixel.x);
   visibility_id = kept_triangle_id(i, instance_count);
-  gl_FragDepth = winners[i] == kNothingDrawn ? 1.0 : uintBitsToFloat(depth_keys[i]);
+  gl_FragDepth = kept_triangle(i) == kNothingDrawn ? 1.0 : uintBitsToFloat(kept_depth_key(i));
 }

@@ -1,5 +1,5 @@
 #version 450 core
-#extension GL_ARB_gpu_shader_int64 : require
+#include "include/compute_raster_extensions.glsl"
 // Compute rasteriser, large triangles (ComputeVisibilityPass, both rounds): one work group per
 // 8x8-pixel tile of each large-triangle entry's pixel box (numbered by the scan), one invocation
 // per pixel, so a triangle over the whole screen spreads over as many groups as it has tiles.

@@ -1,4 +1,5 @@
 #version 450 core
+#include "include/compute_raster_extensions.glsl"
 // Compute rasteriser, per triangle (ComputeVisibilityPass, both rounds): one invocation per
 // triangle of every instance, numbered in draw order (instance after instance, each mesh's
 // triangles in index order: what the id draw's gl_PrimitiveID counts). It culls triangles outside
@@ -94,5 +95,7 @@ void main() {
     row_b += step_b.y;
     row_c += step_c.y;
   }
+#ifndef GLINT_RASTER_ONE_ROUND  // no round 1 to tell
   if (raster_round == 0u && nearest) touched[triangle] = run_stamp;
+#endif
 }

@@ -84,11 +84,19 @@ float interpolate_depth(vec3 z, float weight_b, float weight_c, float inverse_ar
 // What a covered pixel does: round 0 keeps the nearest depth, round 1 the first triangle in draw
 // order among those at exactly the kept depth (the same arithmetic gives the same bits both times).
 // Round 0 returns false when the triangle cannot be kept there: the pixel already holds a nearer
-// depth (a stale read is only larger, so false is always right).
+// depth (a stale read is only larger, so false is always right). With GLINT_RASTER_ONE_ROUND one
+// 64-bit atomicMin of {depth key, triangle} does both rounds' work at once.
 bool update_pixel(ivec2 pixel, float depth, uint triangle) {
   if (!(depth >= 0.0 && depth < 1.0)) return false;  // clipped by the near or far plane, or not nearer than the clear
   const uint key = depth > 0.0 ? floatBitsToUint(depth) : 0u;  // -0 is 0
   const uint i = uint(pixel.y * viewport.x + pixel.x);
+#ifdef GLINT_RASTER_ONE_ROUND
+  // The key word alone (a 32-bit read cannot tear): the pair only decreases, so a key above the
+  // one read can never be kept.
+  if (key > depth_pair_words[2u * i + 1u]) return false;
+  atomicMin(depth_pairs[i], packUint2x32(uvec2(triangle, key)));
+  return true;
+#else
   const uint kept = depth_keys[i];
   if (raster_round == 0u) {
     if (key < kept) atomicMin(depth_keys[i], key);
@@ -96,4 +104,5 @@ bool update_pixel(ivec2 pixel, float depth, uint triangle) {
     atomicMin(winners[i], triangle);
   }
   return key <= kept;
+#endif
 }

@@ -1,6 +1,6 @@
 // The compute rasteriser's large triangles (ComputeVisibilityPass): set-up and coverage with 64-bit
 // edge functions, exact anywhere in the guard band, and the large-triangle list's entries. Needs
-// compute_raster.glsl and GL_ARB_gpu_shader_int64 (enabled by the including shader).
+// compute_raster.glsl and GL_ARB_gpu_shader_int64 (compute_raster_extensions.glsl).
 
 struct ScreenTriangle {
   ivec2 a, b, c;  // snapped window positions, counter-clockwise (positive area)

@@ -1,5 +1,6 @@
 // The buffers of the compute rasteriser (ComputeVisibilityPass, src/render/compute_visibility_pass.*;
 // binding numbers kDepthKeyBinding.. there). A shader uses the ones it needs; the others stay inactive.
+// (Without GLINT_RASTER_ONE_ROUND; with it, depth_pairs holds both, see below.)
 //   depth_keys  one per pixel (GL rows, y * width + x): the float bits of the nearest window depth
 //               (non-negative floats order as their bits), 0xFFFFFFFF where nothing was drawn
 //   winners     one per pixel: the draw-order number of the triangle kept there (instance's first
@@ -22,8 +23,16 @@ struct LargeTriangle {
   ivec4 box;
 };
 
+#ifdef GLINT_RASTER_ONE_ROUND
+// One 64-bit word per pixel instead: the depth key above the triangle's number, so one atomicMin
+// keeps the nearest depth and, among equal depths, the first triangle (compute_raster_extensions.glsl).
+// The second block reads the same buffer as 32-bit words: 2i is pixel i's triangle, 2i + 1 its key.
+layout(std430, binding = 12) buffer DepthPairs { uint64_t depth_pairs[]; };
+layout(std430, binding = 12) buffer DepthPairWords { uint depth_pair_words[]; };
+#else
 layout(std430, binding = 12) buffer DepthKeys { uint depth_keys[]; };
 layout(std430, binding = 13) buffer Winners { uint winners[]; };
+#endif
 layout(std430, binding = 14) buffer LargeTriangles { LargeTriangle large_triangles[]; };
 layout(std430, binding = 15) buffer TileStarts { uint tile_starts[]; };
 layout(std430, binding = 16) buffer Counters {  // the twin of Counters in compute_visibility_pass.cpp
@@ -53,11 +62,28 @@ uint instance_of_triangle(uint triangle, uint instance_count) {
   return lo;
 }
 
+// The triangle kept at pixel index i and the float bits of its depth (kNothingDrawn for both where
+// nothing was drawn).
+uint kept_triangle(uint i) {
+#ifdef GLINT_RASTER_ONE_ROUND
+  return depth_pair_words[2u * i];
+#else
+  return winners[i];
+#endif
+}
+uint kept_depth_key(uint i) {
+#ifdef GLINT_RASTER_ONE_ROUND
+  return depth_pair_words[2u * i + 1u];
+#else
+  return depth_keys[i];
+#endif
+}
+
 // The id the id draw writes for the triangle kept at pixel index i ({instance + 1, triangle in its
 // mesh}; {0, 0} where nothing was drawn): what compute_visibility_ids.comp.glsl stores and the depth
 // draw (compute_visibility_resolve.frag.glsl) writes again with the depth.
 uvec2 kept_triangle_id(uint i, uint instance_count) {
-  const uint triangle = winners[i];
+  const uint triangle = kept_triangle(i);
   if (triangle == kNothingDrawn) return uvec2(0u);
   const uint instance = instance_of_triangle(triangle, instance_count);
   return uvec2(instance + 1u, triangle - instance_first_triangle[instance]);

@@ -143,4 +143,22 @@ ExpandedShaderSource expand_shader_includes(std::string_view name, std::string_v
   return IncludeExpander(lookup, display_root).run(name, source);
 }
 
+std::string add_shader_defines(std::string_view source, std::span<const std::string_view> defines) {
+  if (defines.empty()) return std::string(source);
+  const std::size_t first_line_end = std::min(source.find('\n'), source.size());
+  const std::optional<Directive> first = directive_of(source.substr(0, first_line_end));
+  if (!first || first->word != "version") fail("shader defines: the source must start with its #version line");
+  std::string text(source.substr(0, first_line_end));
+  text += '\n';
+  for (const std::string_view name : defines) {
+    const bool identifier = !name.empty() && std::isdigit(static_cast<unsigned char>(name.front())) == 0 &&
+                            std::all_of(name.begin(), name.end(), is_identifier_char);
+    if (!identifier) fail("shader defines: '{}' is not a GLSL identifier", name);
+    text += fmt::format("#define {} 1\n", name);
+  }
+  text += "#line 2 0\n";
+  if (first_line_end < source.size()) text += source.substr(first_line_end + 1);
+  return text;
+}
+
 }  // namespace glint

@@ -13,6 +13,7 @@
 // expanded include, so the driver's log names the file's number and its own line.
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -36,5 +37,12 @@ inline constexpr int kMaxShaderIncludeDepth = 16;
 // nesting deeper than kMaxShaderIncludeDepth, and an included file that declares #version.
 ExpandedShaderSource expand_shader_includes(std::string_view name, std::string_view source,
                                             const ShaderIncludeLookup& lookup, std::string_view display_root = "");
+
+// `source` with `#define <name> 1` for each of `defines` right after its #version line (GLSL allows
+// nothing before it), then `#line 2 0`, so the driver still numbers the file's own lines. For the
+// variants of one shader that differ in what the machine offers (an extension) and must say so
+// before any declaration. Throws glint::Error when the first line is not #version or a name is not
+// a GLSL identifier.
+std::string add_shader_defines(std::string_view source, std::span<const std::string_view> defines);
 
 }  // namespace glint

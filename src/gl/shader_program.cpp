@@ -136,13 +136,16 @@ ShaderProgram ShaderProgram::from_sources(const std::vector<ShaderStageSource>& 
   return ShaderProgram(std::move(program), std::move(name));
 }
 
-ShaderProgram ShaderProgram::from_embedded(std::initializer_list<std::string_view> names) {
+ShaderProgram ShaderProgram::from_embedded(std::initializer_list<std::string_view> names,
+                                           std::span<const std::string_view> defines) {
   // Include names are looked up among the embedded shaders too; an unknown one is reported by the
   // expander, naming the including file and line.
   std::vector<ExpandedShaderSource> expanded;  // owns the text the stages view
   expanded.reserve(names.size());
-  for (const std::string_view file : names)
+  for (const std::string_view file : names) {
     expanded.push_back(expand_shader_includes(file, shader_source(file), find_embedded_shader, "shaders/"));
+    expanded.back().text = add_shader_defines(expanded.back().text, defines);
+  }
   std::vector<ShaderStageSource> stages;
   auto source = expanded.begin();
   for (const std::string_view file : names) {

@@ -11,6 +11,7 @@
 
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -49,7 +50,9 @@ public:
   // The same from shaders embedded from shaders/ (see embedded_shaders.h), stage from the suffix,
   // after expanding their #include lines from the embedded shaders (shader_includes.h):
   // ShaderProgram::from_embedded({"fullscreen.vert.glsl", "solid_color.frag.glsl"}).
-  static ShaderProgram from_embedded(std::initializer_list<std::string_view> names);
+  // `defines` become `#define NAME 1` at the top of every stage (add_shader_defines).
+  static ShaderProgram from_embedded(std::initializer_list<std::string_view> names,
+                                     std::span<const std::string_view> defines = {});
 
   GLuint id() const { return program_.id(); }
   const std::string& name() const { return name_; }  // "a.vert.glsl + b.frag.glsl"

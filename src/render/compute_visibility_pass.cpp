@@ -9,7 +9,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <optional>
+#include <span>
+#include <string_view>
 #include <vector>
 
 namespace glint::render {
@@ -26,20 +27,22 @@ constexpr GLuint kInstanceFirstTriangleBinding = 17;
 constexpr GLuint kDeferredBinding = 18;
 constexpr GLuint kTouchedBinding = 19;
 
-// The twin of the GLSL Counters block; these values start every run.
+// The twin of the GLSL Counters block (compute_visibility_reset.comp.glsl sets the values every run
+// starts from).
 struct Counters {
   std::uint32_t large_count = 0;
   std::uint32_t overflowed = 0;
   std::uint32_t tile_count = 0;
   std::uint32_t deferred_count = 0;
-  std::uint32_t tile_dispatch[4] = {0, 1, 1, 0};      // written by the scan
-  std::uint32_t deferred_dispatch[4] = {0, 1, 1, 0};  // x counted up by the per-triangle dispatch
+  std::uint32_t tile_dispatch[4] = {};      // written by the scan
+  std::uint32_t deferred_dispatch[4] = {};  // x counted up by the per-triangle dispatch
 };
 constexpr GLintptr kTileDispatchOffset = offsetof(Counters, tile_dispatch);
 constexpr GLintptr kDeferredDispatchOffset = offsetof(Counters, deferred_dispatch);
 
 constexpr std::size_t kLargeTriangleBytes = 64;  // GLSL LargeTriangle: four ivec4/vec4
 constexpr GLuint kTriangleGroupSize = 64;        // compute_visibility_triangles.comp.glsl
+constexpr GLuint kResetGroupSize = 256;          // compute_visibility_reset.comp.glsl
 constexpr GLuint kMaxGroupsX = 65535;            // GL's guaranteed limit per dispatch dimension
 
 // Default list size: one entry per 8 pixels, 6 times what the atrium needs (18,284 entries at
@@ -80,6 +83,16 @@ void set_uint(ShaderProgram& program, const char* name, std::uint32_t value) {
   glProgramUniform1ui(program.id(), program.uniform_location(name), value);
 }
 
+bool offers_64_bit_atomics() {
+  return epoxy_has_gl_extension("GL_NV_shader_atomic_int64") && epoxy_has_gl_extension("GL_ARB_gpu_shader_int64");
+}
+
+// The variant of the rasteriser's shaders (shaders/include/compute_raster_extensions.glsl).
+std::span<const std::string_view> raster_defines(bool one_round) {
+  static constexpr std::string_view kOneRound[] = {"GLINT_RASTER_ONE_ROUND"};
+  return one_round ? std::span<const std::string_view>(kOneRound) : std::span<const std::string_view>();
+}
+
 void clear_to(const GlBuffer& buffer, std::uint32_t value) {
   glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
@@ -90,18 +103,21 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
                                              const ComputeVisibilityOptions& options)
     : targets_(&targets),
       scene_(&scene),
+      one_round_(options.use_64_bit_atomics && offers_64_bit_atomics()),
       capacity_(capacity_for(targets, options)),
-      depth_keys_(create_buffer(pixel_count(targets) * sizeof(std::uint32_t), nullptr)),
-      winners_(create_buffer(pixel_count(targets) * sizeof(std::uint32_t), nullptr)),
+      depth_keys_(create_buffer(pixel_count(targets) * (one_round_ ? sizeof(std::uint64_t) : sizeof(std::uint32_t)), nullptr)),
+      winners_(one_round_ ? GlBuffer() : create_buffer(pixel_count(targets) * sizeof(std::uint32_t), nullptr)),
       large_triangles_(create_buffer(capacity_ * kLargeTriangleBytes, nullptr)),
       tile_starts_(create_buffer(capacity_ * sizeof(std::uint32_t), nullptr)),
-      counters_(create_buffer(sizeof(Counters), nullptr, GL_DYNAMIC_STORAGE_BIT)),
-      triangle_program_(ShaderProgram::from_embedded({"compute_visibility_triangles.comp.glsl"})),
-      large_program_(ShaderProgram::from_embedded({"compute_visibility_large.comp.glsl"})),
+      counters_(create_buffer(sizeof(Counters), nullptr)),
+      reset_program_(ShaderProgram::from_embedded({"compute_visibility_reset.comp.glsl"}, raster_defines(one_round_))),
+      triangle_program_(ShaderProgram::from_embedded({"compute_visibility_triangles.comp.glsl"}, raster_defines(one_round_))),
+      large_program_(ShaderProgram::from_embedded({"compute_visibility_large.comp.glsl"}, raster_defines(one_round_))),
       scan_program_(ShaderProgram::from_embedded({"compute_visibility_scan.comp.glsl"})),
-      tile_program_(ShaderProgram::from_embedded({"compute_visibility_tiles.comp.glsl"})),
-      ids_program_(ShaderProgram::from_embedded({"compute_visibility_ids.comp.glsl"})),
-      resolve_program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "compute_visibility_resolve.frag.glsl"})),
+      tile_program_(ShaderProgram::from_embedded({"compute_visibility_tiles.comp.glsl"}, raster_defines(one_round_))),
+      ids_program_(ShaderProgram::from_embedded({"compute_visibility_ids.comp.glsl"}, raster_defines(one_round_))),
+      resolve_program_(ShaderProgram::from_embedded({"fullscreen.vert.glsl", "compute_visibility_resolve.frag.glsl"},
+                                                    raster_defines(one_round_))),
       framebuffer_(create_framebuffer()),
       empty_vertex_array_(create_vertex_array()) {
   if (scene.instances().empty()) fail("compute visibility: the scene has no instances");
@@ -110,14 +126,17 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
   instance_count_ = static_cast<std::uint32_t>(scene.instances().size());
   instance_first_triangle_ = create_buffer(std::span<const std::uint32_t>(first));
   deferred_ = create_buffer((triangle_count_ + 1) * sizeof(std::uint32_t), nullptr);
-  touched_ = create_buffer((triangle_count_ + 1) * sizeof(std::uint32_t), nullptr);
-  clear_to(touched_, 0u);
+  if (!one_round_) {
+    touched_ = create_buffer((triangle_count_ + 1) * sizeof(std::uint32_t), nullptr);
+    clear_to(touched_, 0u);
+  }
 
   for (ShaderProgram* program : {&large_program_, &scan_program_, &tile_program_})
     set_uint(*program, "large_capacity", capacity_);
   for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_, &ids_program_, &resolve_program_})
     set_uint(*program, "instance_count", instance_count_);
   set_uint(triangle_program_, "triangle_count", triangle_count_);
+  set_uint(reset_program_, "pixel_count", static_cast<std::uint32_t>(pixel_count(targets)));
 
   const GLuint fb = framebuffer_.id();
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, targets.visibility_id.id(), 0);
@@ -130,10 +149,6 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
 void ComputeVisibilityPass::run() {
   GlPassScope scope("compute_visibility");
   const RasterTargets& t = *targets_;
-  clear_to(depth_keys_, 0xFFFFFFFFu);
-  clear_to(winners_, 0xFFFFFFFFu);
-  const Counters start;
-  glNamedBufferSubData(counters_.id(), 0, sizeof(Counters), &start);
   scene_->bind_resources();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepthKeyBinding, depth_keys_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
@@ -143,18 +158,24 @@ void ComputeVisibilityPass::run() {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeferredBinding, deferred_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTouchedBinding, touched_.id());
-  if (++run_stamp_ == 0) {  // after 2^32 runs: stamps of 0 are the cleared ones again
+  if (++run_stamp_ == 0 && !one_round_) {  // after 2^32 runs: stamps of 0 are the cleared ones again
     clear_to(touched_, 0u);
     run_stamp_ = 1;
   }
   set_uint(triangle_program_, "run_stamp", run_stamp_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters_.id());
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the last run's readers of the buffers
+  reset_program_.use();
+  {
+    GlPassScope stage("reset");
+    glDispatchCompute(std::min(work_groups(pixel_count(t), kResetGroupSize), kMaxGroupsX), 1, 1);
+  }
 
   // One invocation per triangle; more groups than one dimension takes wrap into y.
   const GLuint groups = work_groups(triangle_count_, kTriangleGroupSize);
   const GLuint groups_x = std::min(groups, kMaxGroupsX);
   const GLuint groups_y = work_groups(groups, groups_x);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the clears, and deformed vertices
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);  // the reset, and deformed vertices
   const auto set_round = [this](GLuint round) {
     for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_})
       set_uint(*program, "raster_round", round);
@@ -174,18 +195,19 @@ void ComputeVisibilityPass::run() {
   tile_program_.use();
   { GlPassScope stage("tiles"); glDispatchComputeIndirect(kTileDispatchOffset); }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  // Round 1 over the same lists: the three dispatches only read the final depths and lower the
-  // winners, so none waits for another.
-  std::optional<GlPassScope> round1(std::in_place, "round1");  // one scope: a stamp between would serialise them
-  set_round(1);
-  triangle_program_.use();
-  if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
-  large_program_.use();
-  glDispatchComputeIndirect(kDeferredDispatchOffset);
-  tile_program_.use();
-  glDispatchComputeIndirect(kTileDispatchOffset);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  round1.reset();
+  if (!one_round_) {
+    // Round 1 over the same lists: the three dispatches only read the final depths and lower the
+    // winners, so none waits for another.
+    GlPassScope round1("round1");  // one scope: a stamp between would serialise them
+    set_round(1);
+    triangle_program_.use();
+    if (groups > 0) glDispatchCompute(groups_x, groups_y, 1);
+    large_program_.use();
+    glDispatchComputeIndirect(kDeferredDispatchOffset);
+    tile_program_.use();
+    glDispatchComputeIndirect(kTileDispatchOffset);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 
   // The ids by a compute dispatch; the depth only when asked (write_depth).

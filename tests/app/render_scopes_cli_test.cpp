@@ -82,7 +82,7 @@ TEST_F(RenderScopesCli, WritesEveryFramesNestedScopesWithinTheirParents) {
     // The top-level passes of a hybrid frame (timings.csv's columns), and the scopes inside them.
     for (const char* path : {"gbuffer", "shadow", "light", "ssr", "ray_list", "hit_shade", "resolve",
                              "gbuffer/compute_visibility", "gbuffer/compute_visibility/triangles",
-                             "gbuffer/compute_visibility/tiles", "gbuffer/compute_visibility/round1",
+                             "gbuffer/compute_visibility/tiles", "gbuffer/compute_visibility/reset",
                              "gbuffer/visibility_gbuffer", "shadow/shadow_rays/ray_generation",
                              "shadow/shadow_rays/trace", "shadow/shadow_rays/mask"})
       EXPECT_TRUE(ms.contains(path)) << path;

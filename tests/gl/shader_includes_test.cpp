@@ -128,10 +128,10 @@ TEST(ShaderIncludes, EveryExpandedLineMapsBackToItsFileAndLine) {
 TEST(ShaderIncludes, UnknownFileNamesTheIncludingFileAndLine) {
   const FakeRoot root;
   const std::string message = error_of([&] {
-    expand_shader_includes("lighting.frag.glsl", "#version 450 core\n\n#include \"include/nope.glsl\"\n",
+    expand_shader_includes("lighting.comp.glsl", "#version 450 core\n\n#include \"include/nope.glsl\"\n",
                            root.lookup(), "shaders/");
   });
-  EXPECT_NE(message.find("shaders/lighting.frag.glsl:3:"), std::string::npos) << message;
+  EXPECT_NE(message.find("shaders/lighting.comp.glsl:3:"), std::string::npos) << message;
   EXPECT_NE(message.find("unknown include file \"include/nope.glsl\""), std::string::npos) << message;
 }
 
@@ -213,6 +213,27 @@ TEST(ShaderIncludes, OtherDirectivesPassThrough) {
   const FakeRoot root;
   const std::string source = "#version 450 core\n#define includes 1\n#includes_not_an_include\n#extension X : enable\n";
   EXPECT_EQ(expand_shader_includes("t.frag.glsl", source, root.lookup()).text, source);
+}
+
+
+TEST(ShaderDefines, GoRightAfterVersionAndKeepTheFilesLineNumbers) {
+  const std::string_view defines[] = {"ONE_ROUND", "B_2"};
+  const std::string text = add_shader_defines("#version 450 core\nfloat a;\nfloat b;\n", defines);
+  EXPECT_EQ(text, "#version 450 core\n#define ONE_ROUND 1\n#define B_2 1\n#line 2 0\nfloat a;\nfloat b;\n");
+  // Without defines the source is unchanged (no #line either).
+  EXPECT_EQ(add_shader_defines("#version 450 core\nx\n", {}), "#version 450 core\nx\n");
+}
+
+TEST(ShaderDefines, NeedVersionFirstAndIdentifiers) {
+  const std::string_view good[] = {"A"};
+  EXPECT_NE(error_of([&] { add_shader_defines("// comment\n#version 450 core\n", good); }).find("#version line"),
+            std::string::npos);
+  for (const std::string_view bad : {"", "2A", "A B", "A\n#define C"}) {
+    const std::string_view defines[] = {bad};
+    EXPECT_NE(error_of([&] { add_shader_defines("#version 450 core\n", defines); }).find("not a GLSL identifier"),
+              std::string::npos)
+        << bad;
+  }
 }
 
 }  // namespace

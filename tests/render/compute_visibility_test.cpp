@@ -475,11 +475,10 @@ struct PassOutput {
   ComputeVisibilityStats stats;
 };
 
-PassOutput run_pass(const Scene& scene, const FrameState& state, int width, int height, std::uint32_t capacity) {
+PassOutput run_pass(const Scene& scene, const FrameState& state, int width, int height,
+                    const ComputeVisibilityOptions& options) {
   const GpuScene gpu_scene(scene);
   const RasterTargets targets(width, height, true);
-  ComputeVisibilityOptions options;
-  options.large_triangle_capacity = capacity;
   ComputeVisibilityPass pass(targets, gpu_scene, options);
   const FrameConstants constants = make_frame_constants(scene, scene.world_bounds(), state, width, height);
   const GlBuffer buffer = create_buffer(sizeof(FrameConstants), &constants);
@@ -495,14 +494,43 @@ PassOutput run_pass(const Scene& scene, const FrameState& state, int width, int 
 TEST_F(ComputeVisibility, FullLargeTriangleListGivesTheSameImages) {
   const Scene scene = make_preset("atrium-simple");
   const FrameState state = WalkthroughAnimation(scene).at(4400);
-  const PassOutput listed = run_pass(scene, state, 160, 90, 0);
-  const PassOutput full = run_pass(scene, state, 160, 90, 3);
+  const PassOutput listed = run_pass(scene, state, 160, 90, {});
+  const PassOutput full = run_pass(scene, state, 160, 90, {.large_triangle_capacity = 3});
   EXPECT_EQ(listed.stats.overflowed, 0u);
   EXPECT_GT(listed.stats.large_entries, 3u);
   EXPECT_GT(full.stats.overflowed, 0u);
   EXPECT_LE(full.stats.large_entries, 3u);
   EXPECT_TRUE(listed.ids == full.ids);
   EXPECT_TRUE(listed.depth.pixels == full.depth.pixels);
+}
+
+// Where the driver has 64-bit atomics (NVIDIA), one round of {depth, triangle} minima must keep what
+// the two 32-bit rounds keep, bit for bit: on an atrium frame (large and clipped triangles, a full
+// large-triangle list too) and on exact depth ties, where the first triangle in draw order wins.
+TEST_F(ComputeVisibility, OneRoundOf64BitAtomicsEqualsTwoRounds) {
+  const Scene atrium = make_preset("atrium-simple");
+  Scene ties = instanced_scene();
+  ties.instances.push_back(ties.instances[1]);
+  const std::vector<std::pair<const Scene*, FrameState>> cases = {
+      {&atrium, WalkthroughAnimation(atrium).at(4400)}, {&atrium, WalkthroughAnimation(atrium).at(2100)},
+      {&ties, instanced_scene_camera(ties)}};
+  {
+    const GpuScene gpu_scene(atrium);
+    const RasterTargets targets(16, 16, true);
+    if (!ComputeVisibilityPass(targets, gpu_scene).one_round())
+      GTEST_SKIP() << "this GL has no 64-bit atomics on storage buffers (GL_NV_shader_atomic_int64)";
+  }
+  for (const auto& [scene, state] : cases) {
+    for (const std::uint32_t capacity : {0u, 3u}) {
+      const PassOutput one = run_pass(*scene, state, 203, 117, {.large_triangle_capacity = capacity});
+      const PassOutput two =
+          run_pass(*scene, state, 203, 117, {.large_triangle_capacity = capacity, .use_64_bit_atomics = false});
+      EXPECT_TRUE(one.ids == two.ids) << "capacity " << capacity;
+      EXPECT_TRUE(one.depth.pixels == two.depth.pixels) << "capacity " << capacity;
+      EXPECT_EQ(one.stats.large_entries, two.stats.large_entries);
+      EXPECT_EQ(one.stats.overflowed, two.stats.overflowed);
+    }
+  }
 }
 
 // Vertices are read every frame: after a mesh moves in the GpuScene (as deforming meshes do), the
