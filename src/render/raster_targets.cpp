@@ -7,7 +7,8 @@ namespace glint::render {
 namespace {
 
 // Passes read these with texelFetch (one texel per pixel); nearest filtering keeps any sampler
-// lookup from blending positions or ids of different surfaces.
+// lookup from blending positions or ids of different surfaces. Immutable storage
+// (create_texture_2d), so compute passes can bind them as images (shadow mask, lighting).
 GlTexture make_target(GLenum format, int width, int height) {
   GlTexture texture = create_texture_2d(format, width, height);
   glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);

@@ -144,9 +144,9 @@ TEST(GlShaderLog, FindsTheSourceStringNumber) {
 
 TEST_F(GlShaderProgram, EveryEmbeddedPassWithIncludesCompilesAndLinks) {
   // The pass shaders that include shaders/include/*.glsl, in the stage combinations the passes use.
-  ShaderProgram lighting = ShaderProgram::from_embedded({"fullscreen.vert.glsl", "lighting.frag.glsl"});
+  ShaderProgram lighting = ShaderProgram::from_embedded({"lighting.comp.glsl"});
   EXPECT_GE(lighting.uniform_location("ambient_fraction"), 0);
-  ShaderProgram mask = ShaderProgram::from_embedded({"fullscreen.vert.glsl", "shadow_mask.frag.glsl"});
+  ShaderProgram mask = ShaderProgram::from_embedded({"shadow_mask.comp.glsl"});
   for (const char* uniform : {"near_distance", "texel_angle", "pcf_radius_texels", "constant_bias_texels",
                               "slope_bias_texels", "normal_offset_texels"})
     EXPECT_GE(mask.uniform_location(uniform), 0) << uniform;

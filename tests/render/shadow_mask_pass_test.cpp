@@ -19,11 +19,16 @@ struct ShadowCheck {
   int lit_checked = 0, shadowed_checked = 0, wrong = 0;
 };
 
+// Which pixels check_against_analytic_shadow checks: those at least 2 pixels inside the image, or
+// the image's outermost rows and columns.
+enum class CheckedPixels { interior, border };
+
 // Floor pixels whose 5x5 neighbourhood is all floor with the same expected answer must match it
 // exactly (1 lit: no acne anywhere on the floor; 0 shadowed); pixels within 2 of a shadow boundary
-// or another surface are left to PCF.
+// or another surface are left to PCF. On the border only the neighbours inside the image count.
 ShadowCheck check_against_analytic_shadow(const RasterPipeline& raster, vec3 light,
-                                          const std::vector<testing::QuadGeometry>& occluders) {
+                                          const std::vector<testing::QuadGeometry>& occluders,
+                                          CheckedPixels checked = CheckedPixels::interior) {
   const ImageRgbaF position = raster.read_rgbaf(RasterOutput::WorldPosition);
   const ImageRgbaF id = raster.read_rgbaf(RasterOutput::MaterialId);
   const ImageRgbaF mask = raster.read_rgbaf(RasterOutput::ShadowMask);
@@ -33,13 +38,19 @@ ShadowCheck check_against_analytic_shadow(const RasterPipeline& raster, vec3 lig
     for (int x = 0; x < w; ++x)
       if (id.at(x, y).x == 1.0f) expected.at(x, y) = testing::light_blocked(vec3(position.at(x, y)), light, occluders) ? 0 : 1;
   ShadowCheck check;
-  for (int y = 2; y < h - 2; ++y)
-    for (int x = 2; x < w - 2; ++x) {
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool interior = x >= 2 && x < w - 2 && y >= 2 && y < h - 2;
+      const bool border = x == 0 || x == w - 1 || y == 0 || y == h - 1;
+      if (!(checked == CheckedPixels::interior ? interior : border)) continue;
       const int e = expected.at(x, y);
       if (e < 0) continue;
       bool uniform = true;
       for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) uniform = uniform && expected.at(x + dx, y + dy) == e;
+        for (int dx = -2; dx <= 2; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx >= 0 && nx < w && ny >= 0 && ny < h) uniform = uniform && expected.at(nx, ny) == e;
+        }
       if (!uniform) continue;
       (e == 1 ? check.lit_checked : check.shadowed_checked) += 1;
       if (mask.at(x, y).x != static_cast<float>(e)) {
@@ -91,6 +102,23 @@ TEST_F(ShadowMaskPass, ShadowFollowsTheLight) {
   const ShadowCheck check = check_against_analytic_shadow(raster, moved, occluders);
   EXPECT_EQ(check.wrong, 0);
   EXPECT_GT(check.shadowed_checked, 100);
+}
+
+// 37 x 23 is no multiple of the pass's 8 x 8 work groups: the partial groups at the right and top
+// must write every pixel of the last column and row, each with its own pixel's answer. The camera
+// looks almost straight down at the corner (2, 0, 2) of the lid's shadow, from beside the lid, so
+// that the border crosses the shadow's edges (read-backs are top row first; the whole border is
+// checked).
+TEST_F(ShadowMaskPass, TheBorderOfAnImageOfPartialWorkGroupsIsTheAnalyticShadow) {
+  std::vector<testing::QuadGeometry> occluders;
+  const Scene scene = testing::make_floor_with_occluders(occluders);
+  RasterPipeline raster(scene, 37, 23);
+  raster.render(testing::look_at(vec3(2.5f, 3.0f, 2.0f), vec3(2.0f, 0.0f, 2.0f), scene.light.position));
+  const ShadowCheck check =
+      check_against_analytic_shadow(raster, scene.light.position, occluders, CheckedPixels::border);
+  EXPECT_EQ(check.wrong, 0);
+  EXPECT_GT(check.shadowed_checked, 10);
+  EXPECT_GT(check.lit_checked, 10);
 }
 
 }  // namespace
