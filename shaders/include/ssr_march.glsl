@@ -8,8 +8,7 @@
 // otherwise the pixel is marked for ray tracing. Depths are positive linear view depths, and every
 // depth tolerance is a fraction of one, so nothing depends on the scene's scale or position.
 // The including shader sets `const bool kColourInMarch` first: true (ssr.comp.glsl, SsrPass::run)
-// also fetches each trusted hit's colour from the lit image, seen from the reflecting surface
-// (include/ssr_lit_at.glsl); false (ssr_march.comp.glsl,
+// also fetches each trusted hit's colour from the lit image; false (ssr_march.comp.glsl,
 // SsrPass::march) reads only the G-buffer and can run before lighting, so that the frame's ray list
 // and traces follow it in one GL-CUDA hand-over (docs/ssr.md "March, then colour"): each trusted hit
 // goes to `ssr_hits` (include/ssr_hit.glsl), and ssr_colour.comp.glsl fetches its colour once the lit
@@ -52,7 +51,7 @@ const float kHuge = 3.0e38;
 
 ivec2 screen_size;
 
-#include "include/ssr_lit_at.glsl"  // lit_at, seen_along_ray (with kColourInMarch)
+#include "include/ssr_lit_at.glsl"
 
 float edge_term(vec2 pixel_center) {
   if (edge_fade <= 0.0) return 1.0;
@@ -219,9 +218,7 @@ uint trace(ivec2 pixel, vec3 origin_ws, vec3 normal_ws, out SsrHit hit, out floa
   hit.pixel = hit_pixel;
   hit.weight = reflection_weight(view_dir, normal_ws, glossy_roughness(roughness), ray_ws);  // 1 for a mirror
   hit_distance = length(hit_position.xyz - origin_ws);
-  if (kColourInMarch)
-    colour = hit.weight * seen_along_ray(lit_at(hit_point, hit_pixel, hit_position.xyz, hit_normal, footprint),
-                                         hit_pixel, hit_position.xyz, hit_normal, ray_ws);
+  if (kColourInMarch) colour = hit.weight * lit_at(hit_point, hit_pixel, hit_position.xyz, hit_normal, footprint);
   return kHit;
 }
 

@@ -45,13 +45,6 @@ RasterSettings raster_settings(const FramePipelineSettings& settings) {
   return raster;
 }
 
-// SSR's inputs from the raster targets, with what the lighting shaded the lit image with (the hits'
-// view from the reflecting surface, docs/ssr.md "Where the hit is").
-SsrInputs ssr_inputs_of(const RasterPipeline& raster) {
-  return {raster.albedo_reflectivity(), raster.world_position(), raster.world_normal_roughness(), raster.lit(),
-          raster.frame_constants_buffer(), raster.material_id(), raster.shadow_mask(),
-          raster.gpu_scene().material_buffer()};
-}
 
 // The part of a reflection image where the failure mask is `keep` (1: traced, 0: SSR), the rest 0.
 ImageRgbaF masked(ImageRgbaF reflection, const ImageRgbaF& failure_mask, float keep) {
@@ -146,7 +139,8 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   // image; hybrid: SSR's failed ones.
   const bool traces = ray_traced_ && path != ReflectionPath::all_ssr;
   const bool trace_all = traces && (!ssr_ || path == ReflectionPath::all_rays);
-  const SsrInputs ssr_inputs = ssr_inputs_of(raster_);
+  const SsrInputs ssr_inputs{raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(),
+                             raster_.lit(), raster_.frame_constants_buffer()};
   // A device backend that traces shadow and reflection rays traces both in one GL-CUDA hand-over
   // (about 0.3 ms each on an H100, docs/perf.md "Seventh round"): what needs only the G-buffer, up
   // to the traces, runs before lighting (docs/render.md "One hand-over a frame"). Otherwise the
@@ -232,7 +226,8 @@ void FramePipeline::render_more_reflection_samples(std::size_t slot) {
   for (int sample = 1; sample < samples; ++sample) {
     write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, sample);
     if (ssr_)
-      ssr_->run(ssr_inputs_of(raster_));
+      ssr_->run({raster_.albedo_reflectivity(), raster_.world_position(), raster_.world_normal_roughness(), raster_.lit(),
+                 raster_.frame_constants_buffer()});
     if (ray_traced_) {
       if (!ssr_) clear_reflection(own_reflection_.id());
       ray_traced_->run(raster_, ssr_ ? ssr_->failure_mask() : 0, reflection_image(), nullptr);

@@ -4,7 +4,6 @@
 #include "render/compute_dispatch.h"
 #include "gl/gl_pass_scope.h"
 #include "render/frame_constants.h"
-#include "render/gpu_scene.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
 
@@ -18,8 +17,6 @@ namespace {
 constexpr GLuint kAlbedoUnit = 0, kPositionUnit = 1, kNormalUnit = 2, kLitUnit = 3, kReflectionUnit = 4,
                  kFailureMaskUnit = 5, kHitUnit = 6;
 constexpr GLuint kPyramidUnit = 0;  // texture unit of the depth pyramid (sampler depth_pyramid)
-// Texture units of include/ssr_lit_at.glsl (texelFetch: NVIDIA has 8 image units, the march uses 7).
-constexpr GLuint kMaterialIdTextureUnit = 1, kShadowMaskTextureUnit = 2;
 
 }  // namespace
 
@@ -40,7 +37,6 @@ void SsrPass::resize(int width, int height) {
   failure_mask_ = create_texture_2d(kFailureMaskFormat, width, height);
   // The hits are made by the first march() (only frames that split SSR need them: 16 bytes a pixel).
   if (hits_.id() != 0) hits_ = create_texture_2d(kSsrHitFormat, width, height);
-  no_materials_ = GlTexture();  // made again, at the new size, by the next run without materials
   if (pyramid_.width() != width || pyramid_.height() != height) pyramid_.resize(width, height);
   width_ = width;
   height_ = height;
@@ -67,28 +63,6 @@ void SsrPass::run(const SsrInputs& inputs) {
   GlPassScope scope("ssr");
   require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
   dispatch_march(inputs, /*colour_in_march=*/true);
-}
-
-void SsrPass::bind_hit_view_inputs(const SsrInputs& inputs) {
-  GLuint material_id = inputs.material_id;
-  if (material_id != 0) {
-    require_texture("ssr", "material_id", inputs.material_id, kMaterialIdFormat, width_, height_);
-    require_texture("ssr", "shadow_mask", inputs.shadow_mask, kShadowMaskFormat, width_, height_);
-    require_buffer("ssr", "materials", inputs.materials);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialBinding, inputs.materials);
-  } else {
-    // Every id 0: the shader reads no material and keeps the camera's view of each hit.
-    if (no_materials_.id() == 0) {
-      no_materials_ = create_texture_2d(kMaterialIdFormat, width_, height_);
-      glTextureParameteri(no_materials_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTextureParameteri(no_materials_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      const GLuint zero = 0;
-      glClearTexImage(no_materials_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    }
-    material_id = no_materials_.id();
-  }
-  glBindTextureUnit(kMaterialIdTextureUnit, material_id);
-  glBindTextureUnit(kShadowMaskTextureUnit, inputs.shadow_mask);
 }
 
 void SsrPass::march(const SsrInputs& inputs) {
@@ -124,7 +98,6 @@ void SsrPass::dispatch_march(const SsrInputs& inputs, bool colour_in_march) {
     glBindImageTexture(kHitUnit, hits_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kSsrHitFormat);
   }
   glBindTextureUnit(kPyramidUnit, pyramid_.texture());
-  if (colour_in_march) bind_hit_view_inputs(inputs);
   ShaderProgram& program = colour_in_march ? program_ : march_program_;
   program.set_uniform("pyramid_levels", pyramid_.levels());
   dispatch_image_or_tiles(program, tiles_, width_, height_);
@@ -143,12 +116,8 @@ void SsrPass::shade(const SsrInputs& inputs) {
   require_texture("ssr", "world_normal", inputs.world_normal, kWorldNormalRoughnessFormat, width_, height_);
   require_texture("ssr", "lit", inputs.lit, kLitFormat, width_, height_);
   require_buffer("ssr", "frame_constants", inputs.frame_constants);
-  require_texture("ssr", "albedo_reflectivity", inputs.albedo_reflectivity, kAlbedoReflectivityFormat, width_,
-                  height_);
-  bind_hit_view_inputs(inputs);
 
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
-  glBindImageTexture(kAlbedoUnit, inputs.albedo_reflectivity, 0, GL_FALSE, 0, GL_READ_ONLY, kAlbedoReflectivityFormat);
   glBindImageTexture(kPositionUnit, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
   glBindImageTexture(kNormalUnit, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
   glBindImageTexture(kLitUnit, inputs.lit, 0, GL_FALSE, 0, GL_READ_ONLY, kLitFormat);

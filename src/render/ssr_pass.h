@@ -42,13 +42,6 @@ struct SsrInputs {
   GLuint world_normal = 0;         // kWorldNormalRoughnessFormat
   GLuint lit = 0;                  // kLitFormat; the colour a hit reflects
   GLuint frame_constants = 0;      // uniform buffer holding FrameConstants (frame_constants.h)
-  // What the lighting pass shaded `lit` with, for the colour of a hit as the reflecting surface sees
-  // it rather than the camera (its highlight: docs/ssr.md "Where the hit is"). Read by run() and
-  // shade(), not march(). material_id 0: no materials (synthetic G-buffers), every hit keeps the
-  // camera's view; otherwise all three are needed.
-  GLuint material_id = 0;          // kMaterialIdFormat; 0 = background, else GpuScene material + 1
-  GLuint shadow_mask = 0;          // kShadowMaskFormat; the light's visibility the lighting used
-  GLuint materials = 0;            // GpuScene::material_buffer() (GpuMaterial[])
 };
 
 struct SsrCounts {
@@ -102,8 +95,6 @@ public:
 
 private:
   void dispatch_march(const SsrInputs& inputs, bool colour_in_march);
-  // Checks and binds the inputs of the hit's view (SsrInputs::material_id and after) for run() and shade().
-  void bind_hit_view_inputs(const SsrInputs& inputs);
 
   ShaderProgram program_;         // ssr.comp.glsl: the march with the colour fetch (run)
   ShaderProgram march_program_;   // ssr_march.comp.glsl: the march alone (march)
@@ -115,7 +106,6 @@ private:
   GlTexture reflection_;
   GlTexture failure_mask_;
   GlTexture hits_;
-  GlTexture no_materials_;  // kMaterialIdFormat, all 0: bound for inputs without material ids (tests)
   GlBuffer counters_;
   ReadbackRing counts_readback_;
   std::optional<TileListDispatch> tiles_;

@@ -32,10 +32,7 @@ FramePipelineSettings ssr_without_blur() {
 
 struct MaskStats {
   int failed = 0;
-  // Pixels whose SSR reflection is clearly the red wall: red well above green and blue. The wall's
-  // highlight (add_material's specular colour) as the floor sees it, which SSR now shows as rt does
-  // (docs/ssr.md "Where the hit is"), lifts green and blue above the camera's view of it.
-  int red_hits = 0;
+  int red_hits = 0;  // pixels whose SSR reflection is clearly the red wall
 };
 
 MaskStats mask_stats(const FramePipeline& pipeline) {
@@ -44,7 +41,7 @@ MaskStats mask_stats(const FramePipeline& pipeline) {
     if (view.name == "failure_mask")
       for (const auto& p : view.image.pixels) stats.failed += p.x > 127;
     if (view.name == "ssr_reflection")
-      for (const auto& p : view.image.pixels) stats.red_hits += p.x > 100 && p.x > p.y + 80 && p.x > p.z + 80;
+      for (const auto& p : view.image.pixels) stats.red_hits += p.x > 100 && p.y < 20 && p.z < 20;
   }
   return stats;
 }

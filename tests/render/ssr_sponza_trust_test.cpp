@@ -40,11 +40,9 @@ using SsrSponzaTrustTest = glint::testing::GlTest;
 
 // Tolerance (8-bit final colour, largest channel difference, at the pixels SSR trusted): mean <= 2.5
 // and at most 3 % of them more than 16 apart. What remains is what screen space cannot match
-// exactly even where its hit is right: the lit colour's texture filtering is the camera's, and it is
-// interpolated between pixel centres (its direct light is seen from the reflecting surface, at the
-// hit pixel only: docs/ssr.md "Where the hit is").
-// (Measured at 320x180: mean 1.322, 1.5 % over 16 on llvmpipe; 1.714 and 2.4 % with the camera's view
-// of the hit's direct light; 1.766 and 2.1 % with the hit pixel's
+// exactly even where its hit is right: the lit colour is the camera's view of the hit (its
+// highlight and texture filtering), interpolated between pixel centres.
+// (Measured at 320x180: mean 1.714, 2.4 % over 16 on llvmpipe; 1.766 and 2.1 % with the hit pixel's
 // own colour before the colour was taken where the ray meets the surface, too close to tell the two
 // apart here: SsrPassTest.TheColourOfAHitIsTakenWhereTheRayMeetsTheSurface does; the former march's
 // tolerances: 3.06 and 3.5 %.)
