@@ -10,12 +10,13 @@ layout(binding = 3, r8) uniform writeonly image2D shadow_mask;
 struct Ray { vec3 origin; float t_min; vec3 direction; float t_max; };  // accel::Ray
 layout(std430, binding = 10) readonly buffer ShadowRays { Ray rays[]; };
 #include "include/occlusion_flag.glsl"
+#include "include/shadow_ray_index.glsl"
 
 void main() {
   const ivec2 size = imageSize(shadow_mask);
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
-  const uint i = uint(pixel.y * size.x + pixel.x);
+  const uint i = uint(shadow_ray_index(pixel, size));
   const float t_min = rays[i].t_min;
   if (t_min > rays[i].t_max) {
     if (t_min == 2.0) imageStore(shadow_mask, pixel, vec4(0.0));

@@ -1,6 +1,7 @@
 #version 450 core
-// Shadow rays (RayTracedShadows, docs/render.md "Shadow methods"): one ray per pixel, dense (ray
-// index = y * width + x), so nothing is counted and no count is read back. For a lit G-buffer pixel:
+// Shadow rays (RayTracedShadows, docs/render.md "Shadow methods"): one ray per pixel, dense (in
+// blocks of 8 x 4 pixels: include/shadow_ray_index.glsl), so nothing is counted and no count is read
+// back. For a lit G-buffer pixel:
 //   origin    = world position + origin_offset * n   (n: the G-buffer normal turned towards the light)
 //   direction = light position - origin (unnormalised), t in [0, kShadowRayEnd]: the light is at t = 1
 // Pixels that need no ray get an empty ray (t_max = 0 < t_min, which every backend's any-hit
@@ -15,6 +16,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
+#include "include/shadow_ray_index.glsl"
 
 layout(binding = 1, rgba32f) uniform readonly image2D world_position;
 layout(binding = 2, rgba16f) uniform readonly image2D world_normal;
@@ -50,7 +52,7 @@ void main() {
   const ivec2 size = imageSize(world_position);
   const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, size))) return;
-  const uint i = uint(pixel.y * size.x + pixel.x);
+  const uint i = uint(shadow_ray_index(pixel, size));
   const vec4 position = imageLoad(world_position, pixel);
   if (position.w == 0.0) {
     rays[i] = Ray(vec3(0.0), kBackground, vec3(0.0, 0.0, 1.0), 0.0);

@@ -72,9 +72,11 @@ __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& o
           overflow = true;
           return hit;
         }
-        const bool right_first = t_right < t_left;
+        // The occlusion query stops at any hit, so the order cannot change its answer: it walks
+        // left first and keeps no entry distances.
+        const bool right_first = !kAnyHit && t_right < t_left;
         stack_node[stack_size] = right_first ? node.left() : node.right();
-        stack_entry[stack_size] = right_first ? t_left : t_right;
+        if constexpr (!kAnyHit) stack_entry[stack_size] = right_first ? t_left : t_right;
         ++stack_size;
         node = right_first ? right : left;
         continue;
@@ -85,10 +87,14 @@ __device__ inline bool gpu_traverse_bvh(const accel::BvhView& bvh, const vec3& o
       }
     }
     // Pop the next subtree that may still hold something closer than t_max (with the box test's
-    // slack).
+    // slack). The occlusion query's t_max never falls before it returns, and a pushed entry is at
+    // most the box's exit, itself at most t_max with that slack: every subtree passes the test.
+    // (Testing the popped node's box again instead of stacking entries, as the gl backend's walk
+    // does, was slower here: docs/perf.md "Ninth round".)
     for (;;) {
       if (stack_size == 0) return hit;
       --stack_size;
+      if constexpr (kAnyHit) break;
       if (stack_entry[stack_size] <= t_max * accel::kSlabFarScale) break;
     }
     node = load_node(bvh.nodes, stack_node[stack_size]);

@@ -1,8 +1,9 @@
 #pragma once
 // RayTracedShadows: the shadow mask from shadow rays (ShadowMethod rt and hybrid, docs/render.md
 // "Shadow methods"), between the G-buffer and lighting:
-//   1. shadow_rays.comp.glsl: one ray per pixel, dense (ray i is pixel y * width + x), from the
-//      G-buffer position (offset along the normal turned towards the light) to the light; pixels
+//   1. shadow_rays.comp.glsl: one ray per pixel, dense (in blocks of 8 x 4 pixels:
+//      shadow_ray_index.h), from the G-buffer position (offset along the normal turned towards
+//      the light) to the light; pixels
 //      that need none (background, facing away from the light, hybrid: where the cube map's mask is
 //      certain) get an empty ray (t_max < t_min) that tells step 3 their value;
 //   2. the ray tracer's occlusion query over all width x height rays (OcclusionBuffers): a CPU

@@ -7,6 +7,7 @@
 #include "metrics/rmse_psnr.h"
 #include "rt/hit_shadow_ray.h"
 #include "render/frame_pipeline.h"
+#include "render/shadow_ray_index.h"
 #include "rt/ray_tracer.h"
 #include "scene/presets.h"
 #include "scene/sine_deformer.h"
@@ -46,14 +47,15 @@ FramePipelineSettings shadow_settings(ShadowMethod method, const std::string& ba
   return settings;
 }
 
-// The shadow mask, one byte per pixel in GL order (row 0 at the bottom), as the rays are indexed.
+// The shadow mask, one byte per pixel in the order of the rays (shadow_ray_index: GL's rows, row 0
+// at the bottom, in blocks of 8 x 4 pixels).
 std::vector<std::uint8_t> mask_in_ray_order(const FramePipeline& pipeline) {
   const ImageRgbaF mask = pipeline.raster().read_rgbaf(RasterOutput::ShadowMask);  // top row first
   const int w = pipeline.width(), h = pipeline.height();
   std::vector<std::uint8_t> bytes(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      bytes[static_cast<std::size_t>(y * w + x)] = static_cast<std::uint8_t>(
+      bytes[shadow_ray_index(x, y, w, h)] = static_cast<std::uint8_t>(
           std::lround(mask.pixels[static_cast<std::size_t>((h - 1 - y) * w + x)].x * 255.0f));
   return bytes;
 }
@@ -81,7 +83,7 @@ TEST_F(RayTracedShadowsTest, RaysFollowTheRuleFromTheGBuffer) {
   for (int y = 0; y < kHeight; ++y)
     for (int x = 0; x < kWidth; ++x) {
       const std::size_t image_index = static_cast<std::size_t>((kHeight - 1 - y) * kWidth + x);
-      const accel::Ray& ray = rays[static_cast<std::size_t>(y * kWidth + x)];
+      const accel::Ray& ray = rays[shadow_ray_index(x, y, kWidth, kHeight)];
       const vec4 p = positions.pixels[image_index];
       if (p.w == 0.0f) {
         EXPECT_TRUE(empty_ray(ray)) << "background pixel " << x << "," << y;
@@ -128,7 +130,7 @@ TEST_F(RayTracedShadowsTest, MaskIsTheOcclusionOfItsRays) {
       else expected = occluded[i] ? 0 : 255;
       if (!empty_ray(rays[i])) (occluded[i] ? shadowed : lit) += 1;
       if (mask[i] != expected && ++mismatches <= 5)
-        ADD_FAILURE() << "pixel " << i % kWidth << "," << i / kWidth << ": mask " << int(mask[i]) << ", expected "
+        ADD_FAILURE() << "ray " << i << ": mask " << int(mask[i]) << ", expected "
                       << int(expected);
     }
     EXPECT_EQ(mismatches, 0);
