@@ -41,12 +41,7 @@ void HitShadingPass::run(const HitShadingInputs& inputs, std::uint32_t max_rays)
 
   const ShadowCubePass& cube = *inputs.shadow_cube;
   const RasterSettings& raster = *inputs.raster;
-  program_.set_uniform("near_distance", cube.near_distance());
-  program_.set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
-  program_.set_uniform("pcf_radius_texels", raster.pcf_radius_texels);
-  program_.set_uniform("constant_bias_texels", raster.constant_bias_texels);
-  program_.set_uniform("slope_bias_texels", raster.slope_bias_texels);
-  program_.set_uniform("normal_offset_texels", raster.normal_offset_texels);
+  set_cube_shadow_uniforms(program_, cube, raster);
   program_.set_uniform("ambient_fraction", raster.ambient_fraction);
   program_.set_uniform("texture_layer_size", static_cast<float>(inputs.scene->texture_layer_size()));
   program_.set_uniform("shadow_from_rays", inputs.shadow_answers != nullptr ? 1 : 0);

@@ -181,4 +181,16 @@ void ShadowCubePass::draw_per_face(const GpuScene& scene, const std::array<mat4,
   }
 }
 
+// The includers (shadow_mask.comp.glsl, hit_shading.comp.glsl) declare these uniforms under these
+// names and pass them on as the CubeShadowSettings of shaders/include/cube_shadow.glsl, which
+// declares no uniforms itself.
+void set_cube_shadow_uniforms(ShaderProgram& program, const ShadowCubePass& cube, const RasterSettings& settings) {
+  program.set_uniform("near_distance", cube.near_distance());
+  program.set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
+  program.set_uniform("pcf_radius_texels", settings.pcf_radius_texels);
+  program.set_uniform("constant_bias_texels", settings.constant_bias_texels);
+  program.set_uniform("slope_bias_texels", settings.slope_bias_texels);
+  program.set_uniform("normal_offset_texels", settings.normal_offset_texels);
+}
+
 }  // namespace glint::render

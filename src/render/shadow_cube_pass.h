@@ -66,4 +66,9 @@ private:
   ShaderProgram program_;
 };
 
+// Sets the cube-shadow settings of a program that calls cube_shadow_visibility (near_distance,
+// texel_angle, pcf_radius_texels and the three biases, from the last run of `cube` and `settings`):
+// one place for what ShadowMaskPass and HitShadingPass each set, so their shadows cannot drift apart.
+void set_cube_shadow_uniforms(ShaderProgram& program, const ShadowCubePass& cube, const RasterSettings& settings);
+
 }  // namespace glint::render

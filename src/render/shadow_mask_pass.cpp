@@ -21,12 +21,7 @@ ShadowMaskPass::ShadowMaskPass(const RasterTargets& targets)
 
 void ShadowMaskPass::run(const ShadowCubePass& cube, const RasterSettings& settings) {
   GlPassScope scope("shadow_mask");
-  program_.set_uniform("near_distance", cube.near_distance());
-  program_.set_uniform("texel_angle", 2.0f / static_cast<float>(cube.size()));
-  program_.set_uniform("pcf_radius_texels", settings.pcf_radius_texels);
-  program_.set_uniform("constant_bias_texels", settings.constant_bias_texels);
-  program_.set_uniform("slope_bias_texels", settings.slope_bias_texels);
-  program_.set_uniform("normal_offset_texels", settings.normal_offset_texels);
+  set_cube_shadow_uniforms(program_, cube, settings);
 
   glBindTextureUnit(kPositionUnit, targets_->world_position.id());
   glBindTextureUnit(kNormalUnit, targets_->world_normal_roughness.id());
