@@ -105,7 +105,7 @@ private:
     std::vector<uint32_t> host_indices;
     bool host_positions_current = true;
     bool deformable = false;
-    DeviceBuffer<Aabb> boxes;  // triangle boxes: the GPU builders' and refit's input
+    DeviceBuffer<Aabb> boxes;  // triangle boxes: the GPU builders' input (a refit reads the triangles)
     GpuBvh bvh;          // empty with BlasKind::kdtree
     GpuKdTree kdtree;    // BlasKind::kdtree only: built on the CPU, uploaded
     std::optional<GpuBvhBuild> gpu_builder;
@@ -118,8 +118,9 @@ private:
   void rebuild_mesh(uint32_t m);
   // CPU builders (and the kd-tree) build from host positions: after a GPU deformation, read them back.
   void read_back_host_positions(MeshState& state);
-  // measure_sah: also measure its SAH cost now (the automatic policy reads it at the next update).
-  void refit_mesh(uint32_t m, bool measure_sah);
+  // The BLASes of `refitted` in one launch (refit_meshes_gpu); measure_sah: also measure their SAH
+  // costs now (the automatic policy reads them at the next update).
+  void refit_meshes(std::span<const uint32_t> refitted, bool measure_sah);
   void upload_blas_views();
   // instance_boxes_ from the BLASes' root boxes (BVH roots or kd-tree cells) and the transforms.
   void launch_instance_boxes();
@@ -244,14 +245,15 @@ void CudaRayTracer::read_back_host_positions(MeshState& state) {
   state.host_positions_current = true;
 }
 
-void CudaRayTracer::refit_mesh(uint32_t m, bool measure_sah) {
-  MeshState& state = meshes_[m];
-  state.boxes.resize(state.mesh.triangle_count());
-  compute_triangle_boxes(state.mesh.view(), state.boxes.data(), stream_.get());
-  refit_gpu(state.bvh, state.boxes.data(), state.refit_counters, stream_.get());
+void CudaRayTracer::refit_meshes(std::span<const uint32_t> refitted, bool measure_sah) {
+  std::vector<MeshRefit> refits;
+  refits.reserve(refitted.size());
+  for (uint32_t m : refitted) refits.push_back({&meshes_[m].bvh, meshes_[m].mesh.view(), &meshes_[m].refit_counters});
+  refit_meshes_gpu(refits, stream_.get());
   if (!measure_sah) return;
   const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
-  compute_sah_gpu(state.bvh, costs, state.sah_sums, device_sah_.data() + 2 * m + 1, stream_.get());
+  for (uint32_t m : refitted)
+    compute_sah_gpu(meshes_[m].bvh, costs, meshes_[m].sah_sums, device_sah_.data() + 2 * m + 1, stream_.get());
 }
 
 // The traversal reads each BLAS through a device array of views; a rebuild may move a BVH's
@@ -334,6 +336,7 @@ void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::U
   // Automatic: last update's SAH costs are in host memory by now (the copy was queued a frame ago),
   // so waiting for them costs nothing in a frame loop.
   if (policy == rt::UpdatePolicy::automatic && sah_copied_) GLINT_CUDA_CHECK(cudaEventSynchronize(sah_ready_.get()));
+  std::vector<uint32_t> refitted;
   for (uint32_t m : dirty_meshes) {
     // The shared rule (rt/update_decision.h), with the SAH cost of the previous update's refit.
     const std::optional<double> sah_after_refit =
@@ -344,10 +347,11 @@ void CudaRayTracer::enqueue_update(std::span<const uint32_t> dirty_meshes, rt::U
       rebuilt_any = true;
       ++rebuilds_;
     } else {
-      refit_mesh(m, policy == rt::UpdatePolicy::automatic);
+      refitted.push_back(m);
       ++refits_;
     }
   }
+  if (!refitted.empty()) refit_meshes(refitted, policy == rt::UpdatePolicy::automatic);
   if (rebuilt_any) upload_blas_views();
   launch_instance_boxes();
   if (policy == rt::UpdatePolicy::rebuild)

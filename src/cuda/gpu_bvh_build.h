@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 
 namespace glint::cuda {
 
@@ -48,8 +49,20 @@ void compute_triangle_boxes(const accel::TriangleMesh& device_mesh, Aabb* boxes,
 
 // Bottom-up box update after the primitives moved (same count, same topology): every leaf's box from
 // prim_boxes, every interior box from its children, through bvh.parents and one atomic counter per
-// node (`counters`, resized to the node count and reused).
+// node (`counters`, kept with the BVH: zeroed when their count changes, left at 0 by each refit).
 void refit_gpu(GpuBvh& bvh, const Aabb* prim_boxes, DeviceBuffer<uint32_t>& counters, cudaStream_t stream);
+
+// A BLAS refitted from its mesh's triangles (device memory), with its counters as in refit_gpu.
+struct MeshRefit {
+  GpuBvh* bvh = nullptr;
+  accel::TriangleMesh mesh;
+  DeviceBuffer<uint32_t>* counters = nullptr;
+};
+
+// refit_gpu of several BLASes in one launch, each leaf's box computed from its triangles (no box
+// array): the boxes equal refit_gpu's over compute_triangle_boxes bit for bit. The climbs of all
+// the meshes run side by side, where one refit_gpu after another would wait for each one's depth.
+void refit_meshes_gpu(std::span<const MeshRefit> refits, cudaStream_t stream);
 
 // The tree's depth (levels, root = 1), computed on the GPU and read back (waits for the stream).
 uint32_t measure_depth(const GpuBvh& bvh, cudaStream_t stream);

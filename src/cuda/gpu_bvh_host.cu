@@ -5,6 +5,7 @@
 #include "cuda/gpu_mesh.h"
 
 #include <string>
+#include <vector>
 
 namespace glint::cuda {
 namespace {
@@ -137,6 +138,38 @@ accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_
   structure.refit(moved_host_mesh);
   accel::Bvh refitted = structure.download();
   refitted.build_ms = bvh.build_ms;
+  return refitted;
+}
+
+std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
+                                              std::span<const std::vector<accel::TriangleMesh>> poses) {
+  require_cuda_gpu("refit on the GPU");
+  for (const std::vector<accel::TriangleMesh>& pose : poses)
+    if (pose.size() != bvhs.size())
+      fail_message("refit_together_on_gpu: " + std::to_string(bvhs.size()) + " BVHs for a pose of " +
+                   std::to_string(pose.size()) + " meshes");
+  // Every upload and refit on the first structure's stream, so each launch sees its uploads.
+  std::vector<DeviceStructure> structures(bvhs.size());
+  if (structures.empty()) return {};
+  const cudaStream_t stream = structures.front().timing.stream;
+  for (std::size_t i = 0; i < bvhs.size(); ++i) {
+    structures[i].bvh.upload(bvhs[i], stream);
+    structures[i].builder_name = bvhs[i].builder;
+  }
+  for (const std::vector<accel::TriangleMesh>& pose : poses) {
+    std::vector<MeshRefit> refits;
+    for (std::size_t i = 0; i < bvhs.size(); ++i) {
+      structures[i].mesh.upload(pose[i], stream);
+      refits.push_back({&structures[i].bvh, structures[i].mesh.view(), &structures[i].refit_counters});
+    }
+    refit_meshes_gpu(refits, stream);
+  }
+  GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
+  std::vector<accel::Bvh> refitted;
+  for (std::size_t i = 0; i < structures.size(); ++i) {
+    refitted.push_back(structures[i].download());
+    refitted.back().build_ms = bvhs[i].build_ms;
+  }
   return refitted;
 }
 

@@ -9,7 +9,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string_view>
+#include <vector>
 
 namespace glint::cuda {
 
@@ -60,6 +62,11 @@ private:
 accel::Bvh build_bvh_on_gpu(GpuBvhBuilder builder, const accel::TriangleMesh& host_mesh,
                             const accel::BuildOptions& options = {});
 accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_host_mesh);
+// refit_on_gpu of several BVHs together: for each pose in order, bvhs[i] refitted to pose[i], all in
+// one launch of refit_meshes_gpu (later poses reuse the counters the earlier ones left); returns
+// the BVHs after the last pose.
+std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
+                                              std::span<const std::vector<accel::TriangleMesh>> poses);
 uint32_t measure_depth_on_gpu(const accel::Bvh& bvh);
 
 }  // namespace glint::cuda

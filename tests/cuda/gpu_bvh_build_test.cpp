@@ -186,6 +186,9 @@ TEST(GpuBvhWithoutGpu, EveryEntryPointIsOneClearError) {
   };
   expect_cuda_error([&] { (void)cuda::build_bvh_on_gpu(GpuBvhBuilder::lbvh, mesh.view()); }, "build_bvh_on_gpu");
   expect_cuda_error([&] { (void)cuda::refit_on_gpu(bvh, mesh.view()); }, "refit_on_gpu");
+  const std::vector<std::vector<accel::TriangleMesh>> poses{{mesh.view()}};
+  expect_cuda_error([&] { (void)cuda::refit_together_on_gpu(std::span<const accel::Bvh>(&bvh, 1), poses); },
+                    "refit_together_on_gpu");
   expect_cuda_error([&] { (void)cuda::measure_depth_on_gpu(bvh); }, "measure_depth_on_gpu");
   expect_cuda_error([&] { cuda::GpuBvhSession session(GpuBvhBuilder::ploc); }, "GpuBvhSession");
 }
@@ -332,6 +335,46 @@ TEST(GpuBvhRefit, CpuBuiltBvhsWithSeveralPrimitivesPerLeafEqualTheCpuRefitBoxFor
       const accel::Bvh gpu_refitted = cuda::refit_on_gpu(built, moved.view());
       EXPECT_TRUE(same_structure(cpu_refitted, gpu_refitted)) << what;
       EXPECT_EQ(gpu_refitted.builder, built.builder);
+    }
+  }
+}
+
+// The frame's refit (refit_meshes_gpu): several BLASes in one launch, each leaf's box from its
+// triangles, equal the CPU refit of each box for box, also at a second pose whose launch reuses the
+// arrival counters the first left (a counter not set back would let a climb pass a node before its
+// sibling's box was refitted).
+TEST(GpuBvhRefit, SeveralMeshesRefittedInOneLaunchEqualTheCpuRefitAtEachPose) {
+  if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
+  const TestMesh soup = accel::testing::make_random_soup(71, 20000);
+  const TestMesh grid = accel::testing::make_grid(64, false);
+  const TestMesh tiny = accel::testing::make_random_soup(5, 7);
+  const TestMesh single = accel::testing::make_random_soup(9, 1);
+  const TestMesh* rests[] = {&soup, &grid, &tiny, &single};
+  const accel::BvhBuilder builders[] = {accel::BvhBuilder::sah, accel::BvhBuilder::ploc, accel::BvhBuilder::median,
+                                        accel::BvhBuilder::none};
+  std::vector<accel::Bvh> built;
+  std::vector<TestMesh> first, second;
+  for (std::size_t i = 0; i < std::size(rests); ++i) {
+    accel::BuildOptions options;
+    options.max_leaf_size = 4;
+    built.push_back(accel::build_bvh(builders[i], rests[i]->view(), options));
+    first.push_back(sine_deformed(*rests[i], 0.03f));
+    second.push_back(sine_deformed(*rests[i], -0.05f));
+  }
+  std::vector<std::vector<accel::TriangleMesh>> poses(2);
+  for (std::size_t i = 0; i < built.size(); ++i) {
+    poses[0].push_back(first[i].view());
+    poses[1].push_back(second[i].view());
+  }
+  for (std::size_t count : {std::size_t{1}, std::size_t{2}}) {
+    SCOPED_TRACE(::testing::Message() << count << " poses");
+    const std::vector<accel::Bvh> refitted = cuda::refit_together_on_gpu(
+        built, std::span<const std::vector<accel::TriangleMesh>>(poses.data(), count));
+    ASSERT_EQ(refitted.size(), built.size());
+    for (std::size_t i = 0; i < built.size(); ++i) {
+      accel::Bvh expected = built[i];
+      accel::refit(expected, (count == 1 ? first[i] : second[i]).view());
+      EXPECT_TRUE(same_structure(expected, refitted[i])) << "mesh " << i;
     }
   }
 }
