@@ -79,6 +79,10 @@ std::size_t pixel_count(const RasterTargets& targets) {
   return static_cast<std::size_t>(targets.width) * static_cast<std::size_t>(targets.height);
 }
 
+// Work groups of the reset dispatch: one invocation per pixel, at most one dimension's worth of
+// groups (compute_visibility_reset.comp.glsl strides over the pixels beyond them).
+GLuint reset_groups(std::size_t pixels) { return std::min(work_groups(pixels, kResetGroupSize), kMaxGroupsX); }
+
 void set_uint(ShaderProgram& program, const char* name, std::uint32_t value) {
   glProgramUniform1ui(program.id(), program.uniform_location(name), value);
 }
@@ -136,7 +140,9 @@ ComputeVisibilityPass::ComputeVisibilityPass(const RasterTargets& targets, const
   for (ShaderProgram* program : {&triangle_program_, &large_program_, &tile_program_, &ids_program_, &resolve_program_})
     set_uint(*program, "instance_count", instance_count_);
   set_uint(triangle_program_, "triangle_count", triangle_count_);
-  set_uint(reset_program_, "pixel_count", static_cast<std::uint32_t>(pixel_count(targets)));
+  const std::size_t pixels = pixel_count(targets);
+  set_uint(reset_program_, "pixel_count", static_cast<std::uint32_t>(pixels));
+  reset_groups_ = reset_groups(pixels);
 
   const GLuint fb = framebuffer_.id();
   glNamedFramebufferTexture(fb, GL_COLOR_ATTACHMENT0, targets.visibility_id.id(), 0);
@@ -168,7 +174,7 @@ void ComputeVisibilityPass::run() {
   reset_program_.use();
   {
     GlPassScope stage("reset");
-    glDispatchCompute(std::min(work_groups(pixel_count(t), kResetGroupSize), kMaxGroupsX), 1, 1);
+    glDispatchCompute(reset_groups_, 1, 1);
   }
 
   // One invocation per triangle; more groups than one dimension takes wrap into y.

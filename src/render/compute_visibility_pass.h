@@ -88,6 +88,7 @@ private:
   std::uint32_t triangle_count_ = 0;
   std::uint32_t instance_count_ = 0;
   std::uint32_t capacity_ = 0;
+  GLuint reset_groups_ = 0;  // of the reset dispatch, set once: the targets keep the size the buffers have
   GlBuffer depth_keys_, winners_;          // one uint per pixel each; one_round_: one uint64 in depth_keys_, no winners_
   GlBuffer large_triangles_, tile_starts_;  // capacity_ entries each
   GlBuffer counters_;                       // ComputeVisibilityCounters (the .cpp), indirect dispatch inside
