@@ -163,12 +163,7 @@ void ComputeVisibilityPass::run() {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCounterBinding, counters_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeferredBinding, deferred_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTouchedBinding, touched_.id());
-  if (++run_stamp_ == 0 && !one_round_) {  // after 2^32 runs: stamps of 0 are the cleared ones again
-    clear_to(touched_, 0u);
-    run_stamp_ = 1;
-  }
-  set_uint(triangle_program_, "run_stamp", run_stamp_);
+  if (!one_round_) stamp_run();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters_.id());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the last run's readers of the buffers
   reset_program_.use();
@@ -222,6 +217,15 @@ void ComputeVisibilityPass::run() {
   { GlPassScope stage("ids"); dispatch_over_image(t.width, t.height); }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   check_gl("compute visibility");
+}
+
+void ComputeVisibilityPass::stamp_run() {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTouchedBinding, touched_.id());
+  if (++run_stamp_ == 0) {  // after 2^32 runs: stamps of 0 are the cleared ones again
+    clear_to(touched_, 0u);
+    run_stamp_ = 1;
+  }
+  set_uint(triangle_program_, "run_stamp", run_stamp_);
 }
 
 void ComputeVisibilityPass::write_depth() const {

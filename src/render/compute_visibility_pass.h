@@ -82,6 +82,11 @@ public:
   ComputeVisibilityStats read_stats() const;
 
 private:
+  // Two rounds only: a new run stamp, and touched_ bound, for round 0 to mark the triangles round 1
+  // redoes. One round has no round 1, and its shaders never read the stamps (the read waits for
+  // raster_round 1, the write is left out under GLINT_RASTER_ONE_ROUND).
+  void stamp_run();
+
   const RasterTargets* targets_;
   const GpuScene* scene_;
   bool one_round_;  // before the programs: it picks their variant
@@ -94,8 +99,8 @@ private:
   GlBuffer counters_;                       // ComputeVisibilityCounters (the .cpp), indirect dispatch inside
   GlBuffer instance_first_triangle_;        // instance_count_ + 1 uints
   GlBuffer deferred_;                       // triangle_count_ + 1 uints: room for every triangle
-  GlBuffer touched_;                        // triangle_count_ + 1 uints: run stamps
-  std::uint32_t run_stamp_ = 0;             // of the last run; touched_ starts at 0
+  GlBuffer touched_;                        // triangle_count_ + 1 uints: run stamps (two rounds only)
+  std::uint32_t run_stamp_ = 0;             // of the last two-round run; touched_ starts at 0
   ShaderProgram reset_program_, triangle_program_, large_program_, scan_program_, tile_program_, ids_program_, resolve_program_;
   GlFramebuffer framebuffer_;
   GlVertexArray empty_vertex_array_;
