@@ -2,26 +2,18 @@
 
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
+#include "render/compute_dispatch.h"
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
 
 #include <algorithm>
-#include <span>
-#include <string_view>
 
 namespace glint::render {
-namespace {
-
-constexpr std::string_view kFromGBufferDefine[] = {"FROM_GBUFFER"};
-constexpr std::span<const std::string_view> kFromGBuffer = kFromGBufferDefine;
-constexpr GLuint kFirstOutputUnit = 3;  // binding of coarser[0] in depth_pyramid_levels.comp.glsl
-
-}  // namespace
 
 DepthPyramidPass::DepthPyramidPass(int width, int height)
-    : base_(ShaderProgram::from_embedded({"depth_pyramid_levels.comp.glsl"}, kFromGBuffer)),
-      reduce_(ShaderProgram::from_embedded({"depth_pyramid_levels.comp.glsl"})) {
+    : base_(ShaderProgram::from_embedded({"depth_pyramid_base.comp.glsl"})),
+      reduce_(ShaderProgram::from_embedded({"depth_pyramid_reduce.comp.glsl"})) {
   resize(width, height);
 }
 
@@ -54,30 +46,16 @@ void DepthPyramidPass::run(const DepthPyramidInputs& inputs) {
   glBindImageTexture(0, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
   glBindImageTexture(1, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
   glBindImageTexture(2, pyramid_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kDepthPyramidFormat);
+  base_.use();
+  dispatch_over_image(width_, height_);
 
-  // Dispatches of up to kLevelsPerDispatch levels each, the first one making level 0 too: one group
-  // per texel of the dispatch's top level.
-  int first = 1;
-  ShaderProgram* program = &base_;
-  do {
-    const int count = std::min(kLevelsPerDispatch, levels_ - first);
-    if (program == &reduce_) {
-      glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-      glBindImageTexture(0, pyramid_.id(), first - 1, GL_FALSE, 0, GL_READ_ONLY, kDepthPyramidFormat);
-    }
-    // Units past `count` hold the top level again: bound to this texture but never accessed.
-    for (int j = 0; j < kLevelsPerDispatch; ++j) {
-      glBindImageTexture(kFirstOutputUnit + static_cast<GLuint>(j), pyramid_.id(), first + std::min(j, count - 1),
-                         GL_FALSE, 0, GL_WRITE_ONLY, kDepthPyramidFormat);
-    }
-    program->set_uniform("level_count", count);
-    program->use();
-    const int top = first + count - 1;  // level 0 alone for a 1 x 1 image
-    glDispatchCompute(static_cast<GLuint>(std::max(1, width_ >> top)), static_cast<GLuint>(std::max(1, height_ >> top)),
-                      1);
-    first += count;
-    program = &reduce_;
-  } while (first < levels_);
+  reduce_.use();
+  for (int level = 1; level < levels_; ++level) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glBindImageTexture(0, pyramid_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, kDepthPyramidFormat);
+    glBindImageTexture(1, pyramid_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, kDepthPyramidFormat);
+    dispatch_over_image(std::max(1, width_ >> level), std::max(1, height_ >> level));
+  }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   check_gl("depth pyramid");
 }

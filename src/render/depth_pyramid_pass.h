@@ -2,11 +2,10 @@
 // DepthPyramidPass: the hierarchical depth (hi-Z) pyramid SSR traces over, built each frame by
 // compute shaders from the G-buffer. Level 0 holds, per pixel, the range [min, max] of positive
 // linear view depths its surface covers (the plane of its world position and normal across the
-// pixel's footprint); each further level the min of the minima and max of the maxima of the texels
-// under it, down to 1 texel. Background is infinitely far (kPyramidBackgroundDepth). Built by
-// shaders/depth_pyramid_levels.comp.glsl in dispatches of up to kLevelsPerDispatch levels, each work
-// group reducing its tile in shared memory; the first dispatch makes level 0 too (2 dispatches at
-// 1280x720, 3 at 2560x1440). docs/ssr.md "Depth pyramid".
+// pixel's footprint, shaders/depth_pyramid_base.comp.glsl); each further level the min of the
+// minima and max of the maxima of the texels under it (shaders/depth_pyramid_reduce.comp.glsl),
+// down to 1 texel. Background is infinitely far (kPyramidBackgroundDepth). docs/ssr.md "Depth
+// pyramid".
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 
@@ -28,14 +27,9 @@ public:
   DepthPyramidPass(int width, int height);  // throws glint::Error for a non-positive size
 
   void resize(int width, int height);
-  // Builds every level (dispatch_count() dispatches, barriers between). Inputs are checked like the
+  // Builds every level (one dispatch per level, barriers between). Inputs are checked like the
   // other passes' (ids, sizes, formats). Ends with a barrier for texture fetches and image loads.
   void run(const DepthPyramidInputs& inputs);
-
-  // Levels one dispatch makes (after level 0, which the first makes as well): a work group reduces
-  // up to 32 x 32 texels to 1 (its tile in shared memory).
-  static constexpr int kLevelsPerDispatch = 5;
-  int dispatch_count() const { return levels_ <= 1 ? 1 : (levels_ - 1 + kLevelsPerDispatch - 1) / kLevelsPerDispatch; }
 
   GLuint texture() const { return pyramid_.id(); }
   int levels() const { return levels_; }

@@ -1,7 +1,6 @@
-// DepthPyramidPass builds several levels per dispatch, each work group reducing a tile in shared
-// memory; every level must still be exactly what one dispatch per level makes with the rule of
-// docs/ssr.md "Depth pyramid" (min of the minima, max of the maxima of the 2x2 finer texels, the
-// last texel of a row or column also taking the finer level's last where that is odd), on any size.
+// DepthPyramidPass: every level is exactly the rule of docs/ssr.md "Depth pyramid" applied to the
+// level below (min of the minima, max of the maxima of the 2x2 finer texels, the last texel of a row
+// or column also taking the finer level's last where that is odd), on any size.
 #include "render/depth_pyramid_pass.h"
 
 #include "gl/gl_check.h"
@@ -173,13 +172,12 @@ TEST_F(DepthPyramidTest, EveryLevelIsExactlyTheRuleAppliedToTheLevelBelowOnAnySi
   }
 }
 
-TEST_F(DepthPyramidTest, BuildsFiveLevelsPerDispatchAfterTheFirst) {
+TEST_F(DepthPyramidTest, HasAFullMipChainOfLevels) {
   EXPECT_EQ(DepthPyramidPass(1280, 720).levels(), 11);
-  EXPECT_EQ(DepthPyramidPass(1280, 720).dispatch_count(), 2);  // levels 0-5, 6-10
-  EXPECT_EQ(DepthPyramidPass(2560, 1440).dispatch_count(), 3);  // levels 0-5, 6-10, 11
-  EXPECT_EQ(DepthPyramidPass(1, 1).dispatch_count(), 1);
-  EXPECT_EQ(DepthPyramidPass(64, 1).dispatch_count(), 2);  // levels 0-5, 6
-  EXPECT_EQ(DepthPyramidPass(32, 3).dispatch_count(), 1);
+  EXPECT_EQ(DepthPyramidPass(2560, 1440).levels(), 12);
+  EXPECT_EQ(DepthPyramidPass(1, 1).levels(), 1);
+  EXPECT_EQ(DepthPyramidPass(64, 1).levels(), 7);
+  EXPECT_EQ(DepthPyramidPass(32, 3).levels(), 6);
 }
 
 }  // namespace
