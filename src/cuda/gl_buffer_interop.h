@@ -35,7 +35,8 @@ public:
 
   // GL-CUDA-GL round trips since the process started: maps made while no GlBufferInterop was mapped
   // (a map inside another's mapping shares its round trip, if its unmap waits for the outer one's
-  // CUDA work too). Each costs about 0.3 ms of an H100 frame (docs/perf.md "Seventh round"); tests
+  // CUDA work too). Each costs about 0.3 ms of an H100 frame (docs/perf.md "Seventh round"): the GPU
+  // switching between GL's work and CUDA's, not a wait of the host's ("Ninth round"); tests
   // count them per frame. GL runs on one thread, so a plain counter does.
   static std::uint64_t round_trips();
 
