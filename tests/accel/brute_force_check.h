@@ -2,7 +2,8 @@
 // One way to set up the accel tests that compare a structure's traversal with the brute force
 // (test_scenes.h's BruteForceReference): the reference scenes, built once per test program, the
 // comparison of every ray's closest and any hit, and the ray-interval check on three squares. The
-// binary BVH (traversal_test.cpp) and the wide BVHs (wide/wide_bvh_traversal_test.cpp) use it.
+// binary BVH (traversal_test.cpp) and the wide BVHs (wide/wide_bvh_traversal_test.cpp) use it; their
+// suites run as one ctest each (tests/CMakeLists.txt), so the reference is made once, not per parameter.
 #include "accel/test_scenes.h"
 
 #include <cstddef>
