@@ -1,7 +1,10 @@
 // The gl backend's two-level walk, one invocation per ray: src/accel/tlas_traverse.h over the TLAS
 // and src/accel/traverse.h in each BLAS entered (depth first, the nearer child first, the farther one
-// pushed and skipped on pop once a closer hit is known; the conservative slab test; the watertight triangle test; accel::record_closer_hit's tie rule), so hits equal the cpu
-// backend's up to rounding. The includer declares `const bool kAnyHit` first: false for the closest
+// pushed and skipped on pop once a closer hit is known; the conservative slab test; the watertight
+// triangle test; accel::record_closer_hit's tie rule), so hits equal the cpu backend's up to rounding.
+// Each level descends to a leaf before it visits the leaf's contents ("while-while"): on an H100 the
+// gl backend's hybrid frame took 1.70 ms against 1.75 with one step per loop (docs/perf.md, "Tenth
+// round"); the CUDA walk in that form was slower, and keeps one step per loop. The includer declares `const bool kAnyHit` first: false for the closest
 // hit, true for the occlusion query, which returns at the first hit (a compile-time constant, so each
 // kernel compiles only its own walk).
 #include "include/gl_rt_structures.glsl"
@@ -87,6 +90,29 @@ uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, flo
 uint tlas_stack_node[kStackSize];
 uint blas_stack_node[kStackSize];
 
+// The next subtree of one level's walk that may still hold something closer than t_max (with the box
+// test's slack), popped into `node`; false when the stack is empty. The occlusion query returns at
+// its first hit, so its t_max never falls: every pushed node passes, untested.
+bool pop_blas(BoxRay box_ray, float t_min, float t_max, inout uint stack_size, out BvhNode node) {
+  for (;;) {
+    if (stack_size == 0u) return false;
+    --stack_size;
+    node = load_node(blas_stack_node[stack_size]);
+    float entry;
+    if (kAnyHit || intersect_box(box_ray, node, t_min, t_max, entry)) return true;
+  }
+}
+
+bool pop_tlas(BoxRay box_ray, float t_min, float t_max, inout uint stack_size, out BvhNode node) {
+  for (;;) {
+    if (stack_size == 0u) return false;
+    --stack_size;
+    node = load_node(tlas_stack_node[stack_size]);
+    float entry;
+    if (kAnyHit || intersect_box(box_ray, node, t_min, t_max, entry)) return true;
+  }
+}
+
 // One BLAS in the instance's object space. Closest hit: records a closer hit in `hit` (t, prim, u, v),
 // lowering t_max; returns whether it did. Any hit: returns true at the first triangle in range.
 bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min, inout float t_max,
@@ -100,26 +126,10 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
   uint stack_size = 0u;
   bool found = false;
   for (;;) {
-    if (node.prim_count != 0u) {
-      const uint end = node.first + node.prim_count;
-      for (uint slot = node.first; slot != end; ++slot) {
-        const uvec4 corners = leaf_triangles[instance.slot_offset + slot];
-        const uint prim = corners.w;
-        float t, u, v;
-        if (!intersect_triangle(ray, mesh_vertices[corners.x].xyz, mesh_vertices[corners.y].xyz,
-                                mesh_vertices[corners.z].xyz, t_min, t_max, t, u, v))
-          continue;
-        if (kAnyHit) return true;
-        // accel::record_closer_hit: equal t keeps the hit found first (in this or an earlier instance).
-        if (t == t_max && hit.prim != kInvalidIndex) continue;
-        t_max = t;
-        hit.t = t;
-        hit.prim = prim;
-        hit.u = u;
-        hit.v = v;
-        found = true;
-      }
-    } else {
+    // Interior nodes until a leaf, then its triangles ("while-while", Aila & Laine 2009): a warp's
+    // invocations reach their leaves before any of them tests a triangle, so the triangle tests run
+    // side by side instead of one invocation's leaf holding up the others' descent.
+    while (node.prim_count == 0u) {
       BvhNode next;
       uint far_index;
       const uint entered = enter_children(node, instance.node_offset, box_ray, t_min, t_max, next, far_index);
@@ -133,19 +143,29 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
       }
       if (entered != 0u) {
         node = next;
-        continue;
+      } else if (!pop_blas(box_ray, t_min, t_max, stack_size, node)) {
+        return found;
       }
     }
-    // The next subtree that may still hold something closer than t_max (with the box test's slack).
-    // The occlusion query returns at its first hit, so its t_max never falls: every pushed node
-    // passes, untested.
-    for (;;) {
-      if (stack_size == 0u) return found;
-      --stack_size;
-      node = load_node(blas_stack_node[stack_size]);
-      float entry;
-      if (kAnyHit || intersect_box(box_ray, node, t_min, t_max, entry)) break;
+    const uint end = node.first + node.prim_count;
+    for (uint slot = node.first; slot != end; ++slot) {
+      const uvec4 corners = leaf_triangles[instance.slot_offset + slot];
+      const uint prim = corners.w;
+      float t, u, v;
+      if (!intersect_triangle(ray, mesh_vertices[corners.x].xyz, mesh_vertices[corners.y].xyz,
+                              mesh_vertices[corners.z].xyz, t_min, t_max, t, u, v))
+        continue;
+      if (kAnyHit) return true;
+      // accel::record_closer_hit: equal t keeps the hit found first (in this or an earlier instance).
+      if (t == t_max && hit.prim != kInvalidIndex) continue;
+      t_max = t;
+      hit.t = t;
+      hit.prim = prim;
+      hit.u = u;
+      hit.v = v;
+      found = true;
     }
+    if (!pop_blas(box_ray, t_min, t_max, stack_size, node)) return found;
   }
   return found;
 }
@@ -166,21 +186,9 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
   uint stack_size = 0u;
   bool found = false;
   for (;;) {
-    if (node.prim_count != 0u) {
-      const uint end = node.first + node.prim_count;
-      for (uint slot = node.first; slot != end; ++slot) {
-        const uint index = tlas_refs[slot];
-        const TracerInstance instance = tracer_instances[index];
-        const mat4 m = instance.world_to_object;
-        precise vec3 local_origin = (m[0].xyz * origin.x + m[1].xyz * origin.y) + (m[2].xyz * origin.z + m[3].xyz);
-        // w = 0: c3 w is a zero added to c2 z, which leaves it unchanged.
-        precise vec3 local_direction = (m[0].xyz * direction.x + m[1].xyz * direction.y) + m[2].xyz * direction.z;
-        if (!walk_blas(instance, local_origin, local_direction, t_min, t_max, hit)) continue;
-        if (kAnyHit) return true;
-        hit.instance = index;
-        found = true;
-      }
-    } else {
+    // Interior nodes until a leaf, then its instances, as in walk_blas: here the warp's invocations
+    // enter their BLAS walks together.
+    while (node.prim_count == 0u) {
       BvhNode next;
       uint far_index;
       const uint entered = enter_children(node, 0u, box_ray, t_min, t_max, next, far_index);
@@ -194,16 +202,24 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
       }
       if (entered != 0u) {
         node = next;
-        continue;
+      } else if (!pop_tlas(box_ray, t_min, t_max, stack_size, node)) {
+        return found;
       }
     }
-    for (;;) {
-      if (stack_size == 0u) return found;
-      --stack_size;
-      node = load_node(tlas_stack_node[stack_size]);
-      float entry;
-      if (kAnyHit || intersect_box(box_ray, node, t_min, t_max, entry)) break;
+    const uint end = node.first + node.prim_count;
+    for (uint slot = node.first; slot != end; ++slot) {
+      const uint index = tlas_refs[slot];
+      const TracerInstance instance = tracer_instances[index];
+      const mat4 m = instance.world_to_object;
+      precise vec3 local_origin = (m[0].xyz * origin.x + m[1].xyz * origin.y) + (m[2].xyz * origin.z + m[3].xyz);
+      // w = 0: c3 w is a zero added to c2 z, which leaves it unchanged.
+      precise vec3 local_direction = (m[0].xyz * direction.x + m[1].xyz * direction.y) + m[2].xyz * direction.z;
+      if (!walk_blas(instance, local_origin, local_direction, t_min, t_max, hit)) continue;
+      if (kAnyHit) return true;
+      hit.instance = index;
+      found = true;
     }
+    if (!pop_tlas(box_ray, t_min, t_max, stack_size, node)) return found;
   }
   return found;
 }

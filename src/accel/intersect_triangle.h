@@ -37,6 +37,25 @@ GLINT_HOST_DEVICE inline WatertightRay make_watertight_ray(const vec3& origin, c
   return ray;
 }
 
+// A vector's components in the ray's axis order: v[kx], v[ky], v[kz].
+struct AxisOrdered {
+  float x, y, z;
+};
+
+GLINT_HOST_DEVICE inline AxisOrdered in_ray_axes(const WatertightRay& ray, const vec3& v) {
+#if defined(__CUDA_ARCH__)
+  // Selects: indexing a local array with the per-ray axes puts the array in local memory on the
+  // GPU, a store and three loads per vertex; in the closest-hit kernel that was most of its local
+  // memory traffic (docs/perf.md, "Tenth round").
+  const auto pick = [&v](int axis) { return axis == 0 ? v.x : (axis == 1 ? v.y : v.z); };
+  return {pick(ray.kx), pick(ray.ky), pick(ray.kz)};
+#else
+  // On the CPU an index into a plain array is a load, where glm's operator[] is a switch.
+  const float c[3] = {v.x, v.y, v.z};
+  return {c[ray.kx], c[ray.ky], c[ray.kz]};
+#endif
+}
+
 struct TriangleHit {
   float t, u, v;  // point = (1 - u - v) * v0 + u * v1 + v * v2
 };
@@ -46,17 +65,15 @@ struct TriangleHit {
 // traversal and a brute-force loop agree bit for bit on the closest t.
 GLINT_HOST_DEVICE inline bool intersect_triangle(const WatertightRay& ray, const Triangle& tri, float t_min, float t_max,
                                                  TriangleHit& hit) {
-  // Plain arrays: indexing them with the per-ray axes is a load, where glm's operator[] is a switch.
-  const vec3 da = tri.v0 - ray.origin, db = tri.v1 - ray.origin, dc = tri.v2 - ray.origin;
-  const float a[3] = {da.x, da.y, da.z};
-  const float b[3] = {db.x, db.y, db.z};
-  const float c[3] = {dc.x, dc.y, dc.z};
-  const float ax = a[ray.kx] - ray.shear_x * a[ray.kz];
-  const float ay = a[ray.ky] - ray.shear_y * a[ray.kz];
-  const float bx = b[ray.kx] - ray.shear_x * b[ray.kz];
-  const float by = b[ray.ky] - ray.shear_y * b[ray.kz];
-  const float cx = c[ray.kx] - ray.shear_x * c[ray.kz];
-  const float cy = c[ray.ky] - ray.shear_y * c[ray.kz];
+  const AxisOrdered a = in_ray_axes(ray, tri.v0 - ray.origin);
+  const AxisOrdered b = in_ray_axes(ray, tri.v1 - ray.origin);
+  const AxisOrdered c = in_ray_axes(ray, tri.v2 - ray.origin);
+  const float ax = a.x - ray.shear_x * a.z;
+  const float ay = a.y - ray.shear_y * a.z;
+  const float bx = b.x - ray.shear_x * b.z;
+  const float by = b.y - ray.shear_y * b.z;
+  const float cx = c.x - ray.shear_x * c.z;
+  const float cy = c.y - ray.shear_y * c.z;
 
   // Scaled barycentrics: e0 weighs v0, e1 weighs v1, e2 weighs v2.
   float e0 = cx * by - cy * bx;
@@ -71,9 +88,9 @@ GLINT_HOST_DEVICE inline bool intersect_triangle(const WatertightRay& ray, const
   const float det = e0 + e1 + e2;
   if (det == 0.0f) return false;  // ray in the triangle's plane, or a degenerate triangle
 
-  const float az = ray.shear_z * a[ray.kz];
-  const float bz = ray.shear_z * b[ray.kz];
-  const float cz = ray.shear_z * c[ray.kz];
+  const float az = ray.shear_z * a.z;
+  const float bz = ray.shear_z * b.z;
+  const float cz = ray.shear_z * c.z;
   const float scaled_t = e0 * az + e1 * bz + e2 * cz;
   const float inv_det = 1.0f / det;
   const float t = scaled_t * inv_det;
