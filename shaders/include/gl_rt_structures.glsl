@@ -2,8 +2,8 @@
 // BLAS and the TLAS in accel::BvhNode's layout in one node array, each BLAS in its own region; the
 // TLAS leaves' instance indices; per BLAS leaf slot its triangle (corner indices and the triangle's
 // index in its mesh); the meshes' object-space vertices; one record per instance.
-// Bindings 20..24 and 28 (25..27 in gl_rt_kernel.glsl) are above every binding the renderer's passes
-// use, so a trace leaves their bindings alone. Keep in step with src/gl_rt/gl_rt_bindings.h.
+// Storage bindings 21..24 and 28 (25..27 in gl_rt_kernel.glsl) and texture unit 20 are above every
+// binding the renderer's passes use, so a trace leaves their bindings alone. Keep in step with src/gl_rt/gl_rt_bindings.h.
 // `readonly restrict`: nothing writes or aliases them during a trace, which lets a driver read them
 // through its read-only (non-coherent) cache path.
 
@@ -28,9 +28,10 @@ struct TracerInstance {
   uint unused;
 };
 
-// Read as two uvec4 per node (load_node), so every node is two 16-byte loads whatever the compiler
-// makes of a struct; the bounds' bits are floats.
-layout(std430, binding = 20) readonly restrict buffer TracerNodes { uvec4 bvh_node_halves[]; };
+// Read as two RGBA32UI texels per node (load_node), so every node is two 16-byte loads whatever the
+// compiler makes of a struct, through the texture cache (gl_rt_bindings.h, kNodeTextureUnit); the
+// bounds' bits are floats.
+layout(binding = 20) uniform usamplerBuffer bvh_node_texels;
 // The TLAS's leaf slots: instance indices.
 layout(std430, binding = 21) readonly restrict buffer TracerTlasRefs { uint tlas_refs[]; };
 // Object-space positions (w unused) of every mesh, one after the other.
@@ -42,8 +43,8 @@ layout(std430, binding = 23) readonly restrict buffer TracerLeafTriangles { uvec
 layout(std430, binding = 24) readonly restrict buffer TracerInstances { TracerInstance tracer_instances[]; };
 
 BvhNode load_node(uint index) {
-  const uvec4 low = bvh_node_halves[2u * index];
-  const uvec4 high = bvh_node_halves[2u * index + 1u];
+  const uvec4 low = texelFetch(bvh_node_texels, int(2u * index));
+  const uvec4 high = texelFetch(bvh_node_texels, int(2u * index + 1u));
   return BvhNode(uintBitsToFloat(low.xyz), low.w, uintBitsToFloat(high.xyz), high.w);
 }
 

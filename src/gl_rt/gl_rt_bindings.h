@@ -1,12 +1,11 @@
 #pragma once
-// The shader-storage binding points of the gl backend's kernels (shaders/include/gl_rt_*.glsl): above
+// The shader-storage binding points (and the one texture unit) of the gl backend's kernels (shaders/include/gl_rt_*.glsl): above
 // every binding the renderer's passes use (0..18), so a trace leaves their bindings alone. Keep in
 // step with the shaders.
 #include <epoxy/gl.h>
 
 namespace glint::gl_rt {
 
-inline constexpr GLuint kNodeBinding = 20;          // every BVH's accel::BvhNode array, TLAS first
 inline constexpr GLuint kTlasRefBinding = 21;       // the TLAS leaves' instance indices
 inline constexpr GLuint kVertexBinding = 22;        // object-space positions, vec4 each
 inline constexpr GLuint kLeafTriangleBinding = 23;  // uvec4 per BLAS leaf slot: corners and triangle
@@ -16,5 +15,11 @@ inline constexpr GLuint kResultBinding = 26;        // its results: accel::Hit, 
 inline constexpr GLuint kRayCountBinding = 27;      // its count: the buffer's first uint
 inline constexpr GLuint kFlagBinding = 28;          // the stack-overflow flag
 inline constexpr GLuint kHighestBinding = kFlagBinding;
+
+// The texture unit of every BVH's accel::BvhNode array, TLAS first, read as a buffer texture (two
+// RGBA32UI texels a node) rather than a storage buffer: the walk's node loads then go through the
+// texture cache, which made the closest-hit trace 0.52 -> 0.47 ms on an H100 (docs/perf.md, "Tenth
+// round"). Above every unit the renderer's passes use (0..4).
+inline constexpr GLuint kNodeTextureUnit = 20;
 
 }  // namespace glint::gl_rt

@@ -35,6 +35,21 @@ void write(const GlBuffer& buffer, size_t first, std::span<const T> data) {
                        data.data());
 }
 
+// A buffer texture of RGBA32UI texels over `buffer`, two a node; glint::Error when the nodes need more
+// texels than this GL's texture buffers hold (GL_MAX_TEXTURE_BUFFER_SIZE: 2^27 on NVIDIA, 67 M nodes).
+GlTexture node_texture(const GlBuffer& buffer, size_t nodes) {
+  GLint max_texels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+  if (2 * nodes > static_cast<size_t>(max_texels))
+    fail("rt gl: {} BVH nodes need {} texels, more than this GL's texture buffers hold ({})", nodes, 2 * nodes,
+         max_texels);
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+  GlTexture texture(id);
+  glTextureBuffer(texture.id(), GL_RGBA32UI, buffer.id());
+  return texture;
+}
+
 }  // namespace
 
 bool GlStructureBuffers::fits(const MeshBlases& meshes, uint32_t mesh) const {
@@ -92,6 +107,7 @@ void GlStructureBuffers::upload_all(const MeshBlases& meshes, const accel::Tlas&
     for (const vec3& p : mesh.positions) vertex_data.emplace_back(p, 1.0f);
   }
   nodes_ = make_storage(node_data);
+  node_texels_ = node_texture(nodes_, std::max<size_t>(nodes, 1));
   tlas_refs_ = make_storage(std::vector<uint32_t>(tlas_ref_capacity_, 0u));
   vertices_ = make_storage(vertex_data);
   leaf_triangles_ = make_storage(leaf_data);
@@ -150,7 +166,7 @@ void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, con
 }
 
 void GlStructureBuffers::bind() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNodeBinding, nodes_.id());
+  glBindTextureUnit(kNodeTextureUnit, node_texels_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTlasRefBinding, tlas_refs_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLeafTriangleBinding, leaf_triangles_.id());

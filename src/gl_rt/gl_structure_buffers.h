@@ -1,6 +1,7 @@
 #pragma once
 // The gl backend's structures in GL buffers (the layout shaders/include/gl_rt_structures.glsl reads):
-//   nodes           accel::BvhNode[]: the TLAS's region first, then one region per mesh's BLAS
+//   nodes           accel::BvhNode[]: the TLAS's region first, then one region per mesh's BLAS; the
+//                   walk reads it through a buffer texture (gl_rt_bindings.h, kNodeTextureUnit)
 //   tlas_refs       uint[]: the TLAS leaves' instance indices
 //   vertices        vec4[]: every mesh's object-space positions (w unused), mesh after mesh
 //   leaf_triangles  uvec4[]: per BLAS a region of its leaf slots in the BVH's primitive order, each
@@ -49,7 +50,7 @@ public:
   void upload_update(const MeshBlases& meshes, std::span<const uint32_t> dirty_meshes, const std::vector<bool>& rebuilt,
                      const accel::Tlas& tlas);
 
-  // Binds the five buffers at their binding points (gl_rt_bindings.h).
+  // Binds the buffers at their binding points and the nodes' texture at its unit (gl_rt_bindings.h).
   void bind() const;
 
   uint32_t tlas_node_count() const { return tlas_node_count_; }
@@ -73,6 +74,7 @@ private:
   uint32_t tlas_ref_capacity_ = 0;
   uint32_t tlas_node_count_ = 0;
   GlBuffer nodes_, tlas_refs_, vertices_, leaf_triangles_, instances_;
+  GlTexture node_texels_;  // a buffer texture over nodes_
   uint64_t bytes_ = 0;
   std::vector<vec4> vertex_scratch_;          // a dirty mesh's positions widened to vec4 for the upload
   std::vector<glm::uvec4> leaf_scratch_;      // a rebuilt mesh's leaf slots
