@@ -7,7 +7,8 @@
 // frame of the renderer pays, where vertices, rays and hits already live on the GPU:
 //  - build: GPU builders: triangle boxes + build, the mesh already uploaded; CPU builders: the CPU
 //    build's wall time plus the upload of the BVH.
-//  - refit: triangle boxes + bottom-up refit, the moved vertices already uploaded.
+//  - refit: one launch that boxes the leaves from the triangles and refits bottom-up (the frame's
+//    refit_meshes_gpu), the moved vertices already uploaded.
 //  - trace: the closest-hit kernel alone (the rays' upload and the hits' download excluded).
 // Plain C++ (no CUDA headers); without CUDA or a GPU the constructor throws glint::Error.
 #include "accel/builders/build_options.h"

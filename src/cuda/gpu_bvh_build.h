@@ -1,9 +1,10 @@
 #pragma once
-// GPU BVH construction and refit over primitive boxes that already live in device memory (triangle
-// boxes for a BLAS, instance world boxes for a TLAS), so a deforming mesh is rebuilt or refitted
-// every frame without a host round trip. The output is a GpuBvh in accel::BvhNode's flat layout
-// (children after their parent, siblings adjacent), so accel/traverse.h walks it unchanged and a
-// downloaded copy passes accel::validate_bvh.
+// GPU BVH construction over primitive boxes that already live in device memory (triangle boxes for
+// a BLAS, instance world boxes for a TLAS) and refit (a BLAS's leaves boxed from its triangles, a
+// TLAS's from the instance boxes), so a deforming mesh is rebuilt or refitted every frame without a
+// host round trip. The output is a GpuBvh in accel::BvhNode's flat layout (children after their
+// parent, siblings adjacent), so accel/traverse.h walks it unchanged and a downloaded copy passes
+// accel::validate_bvh.
 //
 // Everything here is asynchronous on the given stream: calls enqueue work and return; once the
 // builder's scratch and the output are large enough, a rebuild allocates nothing.
@@ -44,12 +45,14 @@ private:
   std::unique_ptr<Scratch> scratch_;
 };
 
-// boxes[i] = bounds of mesh.triangle(i) for every triangle (device memory on both sides).
+// boxes[i] = bounds of mesh.triangle(i) for every triangle (device memory on both sides): a BLAS
+// build's input (a BLAS refit boxes its leaves from the triangles itself, refit_meshes_gpu).
 void compute_triangle_boxes(const accel::TriangleMesh& device_mesh, Aabb* boxes, cudaStream_t stream);
 
 // Bottom-up box update after the primitives moved (same count, same topology): every leaf's box from
 // prim_boxes, every interior box from its children, through bvh.parents and one atomic counter per
 // node (`counters`, kept with the BVH: zeroed when their count changes, left at 0 by each refit).
+// The TLAS's refit over its instance boxes; refit_meshes_gpu's kernel with one BVH.
 void refit_gpu(GpuBvh& bvh, const Aabb* prim_boxes, DeviceBuffer<uint32_t>& counters, cudaStream_t stream);
 
 // A BLAS refitted from its mesh's triangles (device memory), with its counters as in refit_gpu.

@@ -4,6 +4,7 @@
 #include "cuda/gpu_bvh_build.h"
 #include "cuda/gpu_mesh.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,32 +41,29 @@ struct TimedStream {
   }
 };
 
-// The mesh, its boxes and a BVH over them on the GPU: what the session and the one-shot
-// functions share.
+// The mesh and a BVH over it on the GPU: what the session and the one-shot functions share.
 struct DeviceStructure {
   TimedStream timing;
   GpuMesh mesh;
-  DeviceBuffer<Aabb> boxes;
   GpuBvh bvh;
   DeviceBuffer<uint32_t> refit_counters;
   std::string builder_name;  // of the BVH in `bvh`
 
-  // Uploads the vertices and computes one box per triangle (on the stream).
-  void set_mesh(const accel::TriangleMesh& host_mesh) {
-    mesh.upload(host_mesh, timing.stream);
-    boxes.resize(host_mesh.triangle_count);
-    compute_triangle_boxes(mesh.view(), boxes.data(), timing.stream);
-  }
+  // This structure as one entry of refit_meshes_gpu.
+  MeshRefit mesh_refit() { return {&bvh, mesh.view(), &refit_counters}; }
 
+  // The frame's refit (refit_meshes_gpu) with one mesh: the leaves are boxed from the triangles in
+  // the timed launch itself.
   double refit(const accel::TriangleMesh& moved_host_mesh) {
     if (!bvh.refittable)
       fail_message("refit on the GPU: the BVH (builder '" + builder_name + "') is not refittable; rebuild it instead");
     if (moved_host_mesh.triangle_count != bvh.prim_indices.size())
       fail_message("refit on the GPU: " + std::to_string(moved_host_mesh.triangle_count) +
                    " triangles for a BVH over " + std::to_string(bvh.prim_indices.size()) + " primitives");
-    set_mesh(moved_host_mesh);
+    mesh.upload(moved_host_mesh, timing.stream);
+    const MeshRefit refit = mesh_refit();
     GLINT_CUDA_CHECK(cudaEventRecord(timing.start, timing.stream));
-    refit_gpu(bvh, boxes.data(), refit_counters, timing.stream);
+    refit_meshes_gpu(std::span<const MeshRefit>(&refit, 1), timing.stream);
     GLINT_CUDA_CHECK(cudaEventRecord(timing.stop, timing.stream));
     return timing.elapsed_ms();
   }
@@ -85,6 +83,7 @@ struct GpuBvhSession::State {
   State(GpuBvhBuilder builder, const accel::BuildOptions& options) : build(builder, options) {}
 
   GpuBvhBuild build;
+  DeviceBuffer<Aabb> boxes;  // the builder's input: one box per triangle
   DeviceStructure structure;
   double last_build_ms = 0.0;
 };
@@ -98,9 +97,11 @@ GpuBvhSession::~GpuBvhSession() = default;
 
 double GpuBvhSession::build(const accel::TriangleMesh& host_mesh) {
   DeviceStructure& s = state_->structure;
-  s.set_mesh(host_mesh);
+  s.mesh.upload(host_mesh, s.timing.stream);
+  state_->boxes.resize(host_mesh.triangle_count);
+  compute_triangle_boxes(s.mesh.view(), state_->boxes.data(), s.timing.stream);
   GLINT_CUDA_CHECK(cudaEventRecord(s.timing.start, s.timing.stream));
-  state_->build.build(s.boxes.data(), host_mesh.triangle_count, s.bvh, s.timing.stream);
+  state_->build.build(state_->boxes.data(), host_mesh.triangle_count, s.bvh, s.timing.stream);
   GLINT_CUDA_CHECK(cudaEventRecord(s.timing.stop, s.timing.stream));
   s.builder_name = gpu_builder_name(state_->build.builder());
   state_->last_build_ms = s.timing.elapsed_ms();
@@ -160,7 +161,7 @@ std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
     std::vector<MeshRefit> refits;
     for (std::size_t i = 0; i < bvhs.size(); ++i) {
       structures[i].mesh.upload(pose[i], stream);
-      refits.push_back({&structures[i].bvh, structures[i].mesh.view(), &structures[i].refit_counters});
+      refits.push_back(structures[i].mesh_refit());
     }
     refit_meshes_gpu(refits, stream);
   }

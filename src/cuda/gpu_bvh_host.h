@@ -47,7 +47,8 @@ public:
   // refit() can update it.
   void upload(const accel::Bvh& bvh);
   // Uploads the moved vertices (same triangle count and indices as the mesh the structure was
-  // built over), recomputes the boxes and refits on the GPU; returns the refit's GPU time (ms).
+  // built over) and refits on the GPU, the leaves boxed from the triangles in the same launch
+  // (refit_meshes_gpu); returns that launch's GPU time (ms).
   double refit(const accel::TriangleMesh& moved_host_mesh);
   // The current structure copied to the host, with its depth measured on the GPU.
   accel::Bvh download() const;
