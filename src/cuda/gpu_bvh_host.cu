@@ -142,8 +142,8 @@ accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_
   return refitted;
 }
 
-std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
-                                              std::span<const std::vector<accel::TriangleMesh>> poses) {
+RefitTogetherResult refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
+                                          std::span<const std::vector<accel::TriangleMesh>> poses) {
   require_cuda_gpu("refit on the GPU");
   for (const std::vector<accel::TriangleMesh>& pose : poses)
     if (pose.size() != bvhs.size())
@@ -166,12 +166,13 @@ std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
     refit_meshes_gpu(refits, stream);
   }
   GLINT_CUDA_CHECK(cudaStreamSynchronize(stream));
-  std::vector<accel::Bvh> refitted;
+  RefitTogetherResult result;
   for (std::size_t i = 0; i < structures.size(); ++i) {
-    refitted.push_back(structures[i].download());
-    refitted.back().build_ms = bvhs[i].build_ms;
+    result.bvhs.push_back(structures[i].download());
+    result.bvhs.back().build_ms = bvhs[i].build_ms;
+    result.arrival_counters.push_back(structures[i].refit_counters.download());
   }
-  return refitted;
+  return result;
 }
 
 uint32_t measure_depth_on_gpu(const accel::Bvh& bvh) {

@@ -63,11 +63,17 @@ private:
 accel::Bvh build_bvh_on_gpu(GpuBvhBuilder builder, const accel::TriangleMesh& host_mesh,
                             const accel::BuildOptions& options = {});
 accel::Bvh refit_on_gpu(const accel::Bvh& bvh, const accel::TriangleMesh& moved_host_mesh);
+// What refit_together_on_gpu leaves: the BVHs after the last pose and each one's arrival counters
+// (one per node) as the last refit left them, all 0 when every climb set its counters back (a test
+// reads them: a counter left at 1 would only sometimes give a wrong box at the next refit).
+struct RefitTogetherResult {
+  std::vector<accel::Bvh> bvhs;
+  std::vector<std::vector<uint32_t>> arrival_counters;
+};
 // refit_on_gpu of several BVHs together: for each pose in order, bvhs[i] refitted to pose[i], all in
-// one launch of refit_meshes_gpu (later poses reuse the counters the earlier ones left); returns
-// the BVHs after the last pose.
-std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
-                                              std::span<const std::vector<accel::TriangleMesh>> poses);
+// one launch of refit_meshes_gpu (later poses reuse the counters the earlier ones left).
+RefitTogetherResult refit_together_on_gpu(std::span<const accel::Bvh> bvhs,
+                                          std::span<const std::vector<accel::TriangleMesh>> poses);
 uint32_t measure_depth_on_gpu(const accel::Bvh& bvh);
 
 }  // namespace glint::cuda

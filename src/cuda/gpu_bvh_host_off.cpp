@@ -26,8 +26,8 @@ accel::Bvh build_bvh_on_gpu(GpuBvhBuilder, const accel::TriangleMesh&, const acc
   fail_without_cuda("the GPU BVH builders");
 }
 accel::Bvh refit_on_gpu(const accel::Bvh&, const accel::TriangleMesh&) { fail_without_cuda("refit on the GPU"); }
-std::vector<accel::Bvh> refit_together_on_gpu(std::span<const accel::Bvh>,
-                                              std::span<const std::vector<accel::TriangleMesh>>) {
+RefitTogetherResult refit_together_on_gpu(std::span<const accel::Bvh>,
+                                          std::span<const std::vector<accel::TriangleMesh>>) {
   fail_without_cuda("refit on the GPU");
 }
 uint32_t measure_depth_on_gpu(const accel::Bvh&) { fail_without_cuda("measure_depth on the GPU"); }

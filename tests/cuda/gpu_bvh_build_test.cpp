@@ -24,7 +24,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -341,8 +343,9 @@ TEST(GpuBvhRefit, CpuBuiltBvhsWithSeveralPrimitivesPerLeafEqualTheCpuRefitBoxFor
 
 // The frame's refit (refit_meshes_gpu): several BLASes in one launch, each leaf's box from its
 // triangles, equal the CPU refit of each box for box, also at a second pose whose launch reuses the
-// arrival counters the first left (a counter not set back would let a climb pass a node before its
-// sibling's box was refitted).
+// arrival counters the first left. Every counter must be 0 after each refit: one not set back would
+// let the next climb pass a node before its sibling's box was refitted, which the boxes show only
+// when the timing goes wrong; the counters show it every time.
 TEST(GpuBvhRefit, SeveralMeshesRefittedInOneLaunchEqualTheCpuRefitAtEachPose) {
   if (!cuda_gpu_present()) GTEST_SKIP() << "no CUDA GPU";
   const TestMesh soup = accel::testing::make_random_soup(71, 20000);
@@ -368,13 +371,18 @@ TEST(GpuBvhRefit, SeveralMeshesRefittedInOneLaunchEqualTheCpuRefitAtEachPose) {
   }
   for (std::size_t count : {std::size_t{1}, std::size_t{2}}) {
     SCOPED_TRACE(::testing::Message() << count << " poses");
-    const std::vector<accel::Bvh> refitted = cuda::refit_together_on_gpu(
+    const cuda::RefitTogetherResult refitted = cuda::refit_together_on_gpu(
         built, std::span<const std::vector<accel::TriangleMesh>>(poses.data(), count));
-    ASSERT_EQ(refitted.size(), built.size());
+    ASSERT_EQ(refitted.bvhs.size(), built.size());
+    ASSERT_EQ(refitted.arrival_counters.size(), built.size());
     for (std::size_t i = 0; i < built.size(); ++i) {
       accel::Bvh expected = built[i];
       accel::refit(expected, (count == 1 ? first[i] : second[i]).view());
-      EXPECT_TRUE(same_structure(expected, refitted[i])) << "mesh " << i;
+      EXPECT_TRUE(same_structure(expected, refitted.bvhs[i])) << "mesh " << i;
+      const std::vector<uint32_t>& counters = refitted.arrival_counters[i];
+      EXPECT_EQ(counters.size(), built[i].nodes.size()) << "mesh " << i;
+      EXPECT_EQ(std::count(counters.begin(), counters.end(), 0u), static_cast<std::ptrdiff_t>(counters.size()))
+          << "mesh " << i << ": arrival counters left above 0";
     }
   }
 }
