@@ -164,6 +164,7 @@ private:
   rt::SceneShape shape_;
   std::vector<std::string> mesh_names_;
   std::vector<MeshState> meshes_;
+  std::vector<MeshRefit> mesh_refits_;  // refit_meshes' list, kept so a deforming frame allocates nothing
   std::vector<accel::Instance> host_instances_;
   // Small per-update uploads through pinned memory, so enqueuing them never waits for the GPU.
   PinnedUpload<accel::Instance> instances_;
@@ -246,10 +247,10 @@ void CudaRayTracer::read_back_host_positions(MeshState& state) {
 }
 
 void CudaRayTracer::refit_meshes(std::span<const uint32_t> refitted, bool measure_sah) {
-  std::vector<MeshRefit> refits;
-  refits.reserve(refitted.size());
-  for (uint32_t m : refitted) refits.push_back({&meshes_[m].bvh, meshes_[m].mesh.view(), &meshes_[m].refit_counters});
-  refit_meshes_gpu(refits, stream_.get());
+  mesh_refits_.clear();
+  for (uint32_t m : refitted)
+    mesh_refits_.push_back({&meshes_[m].bvh, meshes_[m].mesh.view(), &meshes_[m].refit_counters});
+  refit_meshes_gpu(mesh_refits_, stream_.get());
   if (!measure_sah) return;
   const accel::SahCosts costs{options_.build.traversal_cost, options_.build.intersection_cost};
   for (uint32_t m : refitted)
