@@ -16,7 +16,9 @@ layout(local_size_x = 64) in;
 #include "include/compute_raster.glsl"
 
 uniform uint triangle_count;
+#ifndef GLINT_RASTER_ONE_ROUND  // the stamps tell round 1 what to redo: one round has none
 uniform uint run_stamp;  // differs from every earlier run's
+#endif
 
 // A triangle is small when one invocation tests at most kSmallTriangleMaxPixels candidate centres
 // (its pixel box): the pixels a thread walks bound how long its warp waits, whatever the scene's
@@ -36,9 +38,11 @@ void main() {
   const uint triangle =
       (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * gl_WorkGroupSize.x + gl_LocalInvocationID.x;
   if (triangle >= triangle_count) return;
+#ifndef GLINT_RASTER_ONE_ROUND
   // Round 1 redoes only the small triangles round 0 found nearest somewhere (most are culled or
   // hidden): a triangle nearer than all others at a pixel was nearer than what it read there.
   if (raster_round != 0u && touched[triangle] != run_stamp) return;
+#endif
   vec4 p[3];
   fetch_triangle(triangle, p);
   if ((outcode(p[0]) & outcode(p[1]) & outcode(p[2])) != 0u) return;

@@ -13,6 +13,7 @@
 //   instance_first_triangle   instance i's triangles are [first[i], first[i + 1]) in draw order
 //   touched     per triangle: the run stamp when round 0 found it nearest at some pixel (small
 //               triangles only); round 1 skips the small triangles without this run's stamp
+// GLINT_RASTER_ONE_ROUND declares neither winners nor touched: the pass binds no buffer there.
 
 // A large triangle (or one piece of a clipped one), set up: corners in window space at 1/256 pixel,
 // counter-clockwise; their window depths; the pixel box (x0, y0, x1, y1 inclusive, in the viewport).
@@ -45,7 +46,9 @@ layout(std430, binding = 16) buffer Counters {  // the twin of Counters in compu
 };
 layout(std430, binding = 17) readonly buffer InstanceFirstTriangle { uint instance_first_triangle[]; };
 layout(std430, binding = 18) buffer Deferred { uint deferred[]; };
+#ifndef GLINT_RASTER_ONE_ROUND
 layout(std430, binding = 19) buffer Touched { uint touched[]; };
+#endif
 
 const uint kNothingDrawn = 0xFFFFFFFFu;
 const uint kOverflowed = 0x80000000u;  // in deferred[]; triangle numbers stay below it

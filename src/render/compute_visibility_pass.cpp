@@ -157,13 +157,15 @@ void ComputeVisibilityPass::run() {
   const RasterTargets& t = *targets_;
   scene_->bind_resources();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepthKeyBinding, depth_keys_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLargeTriangleBinding, large_triangles_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStartBinding, tile_starts_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCounterBinding, counters_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDeferredBinding, deferred_.id());
-  if (!one_round_) stamp_run();
+  if (!one_round_) {  // the one-round shaders declare neither winners nor touched
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
+    stamp_run();
+  }
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters_.id());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the last run's readers of the buffers
   reset_program_.use();
@@ -233,7 +235,7 @@ void ComputeVisibilityPass::write_depth() const {
   const RasterTargets& t = *targets_;
   scene_->bind_resources();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDepthKeyBinding, depth_keys_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
+  if (!one_round_) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWinnerBinding, winners_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceFirstTriangleBinding, instance_first_triangle_.id());
   // Ids and depth through the framebuffer the id draw would use: every pixel written, depth
   // test on so that depth is written, always passing.

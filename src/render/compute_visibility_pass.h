@@ -83,8 +83,7 @@ public:
 
 private:
   // Two rounds only: a new run stamp, and touched_ bound, for round 0 to mark the triangles round 1
-  // redoes. One round has no round 1, and its shaders never read the stamps (the read waits for
-  // raster_round 1, the write is left out under GLINT_RASTER_ONE_ROUND).
+  // redoes. One round has no round 1: its shaders (GLINT_RASTER_ONE_ROUND) declare no stamps.
   void stamp_run();
 
   const RasterTargets* targets_;
