@@ -195,3 +195,37 @@ if [ "$STEP" = j ]; then
   python3 tools/frame_table.py $R/f > $R/frames.md 2>&1; cat $R/frames.md
   rm -rf $R/c-*/frame_*.png $R/f/*/frame_*.png
 fi
+# k: the whole test suite with the session's final binary.
+if [ "$STEP" = k ]; then
+  ( cd $R && timeout 560 glint_tests --gtest_brief=1 > tests.log 2>&1; echo "tests rc=$?" >> tests.log )
+  grep -E "FAILED|PASSED|tests from|rc=|SKIPPED \]" $R/tests.log | tail -30
+fi
+# l: the session's final binary against the session's first (base): frames, scopes, images, accel-bench.
+if [ "$STEP" = l ]; then
+  for bin in base new; do g=glint; [ $bin = base ] && g=/tmp/w/glint-base
+    for cfg in 1280x720:hybrid:cuda:off 1280x720:hybrid:cuda:on 1280x720:rt:cuda:off 1280x720:rt:cuda:on 1280x720:ssr:cuda:off 1280x720:off:cuda:off \
+               2560x1440:hybrid:cuda:off 2560x1440:hybrid:cuda:on 1280x720:hybrid:gl:off 1280x720:rt:gl:off 2560x1440:hybrid:gl:off 1280x720:hybrid:gl:on; do
+      IFS=: read size mode be deform <<< "$cfg"
+      for rep in 1 2; do
+        timeout 60 $g render atrium --backend $be --reflections $mode --width ${size%x*} --height ${size#*x} --frames 2071:2110 \
+          --timings-only $common --shadows rt --deform $deform --out $R/f/$bin-$be-$size-$mode-deform-$deform-r$rep > $R/f.log 2>&1 || { echo "$bin $cfg failed"; tail -2 $R/f.log; }
+      done
+    done
+    for be in cuda gl; do
+      timeout 30 $g render atrium --backend $be --reflections hybrid --width 1280 --height 720 --frames 2071:2110 \
+        --timings-only $common --shadows rt --deform off --profile-scopes --out $R/s/$bin-$be > $R/s.log 2>&1 || echo "scopes $bin $be failed"
+    done
+    for cfg in hybrid:rt:cuda rt:rt:cuda hybrid:cube:cuda hybrid:rt:gl; do IFS=: read mode sh be <<< "$cfg"
+      timeout 60 $g render atrium --backend $be --reflections $mode --width 1280 --height 720 --frames 2096:2103 \
+        $common --shadows $sh --deform on --out $R/img-$bin-$mode-$sh-$be > $R/img.log 2>&1 || echo "images $bin $cfg failed"
+    done
+    timeout 300 $g accel-bench atrium --builders cuda-sah,cuda-lbvh,cuda-ploc --rays reflection --width 1280 --height 720 --build-runs 1 > $R/ab-$bin.txt 2>&1 || echo "accel-bench $bin failed"
+  done
+  python3 tools/frame_table.py $R/f > $R/frames.md 2>&1; cat $R/frames.md
+  for d in $R/f/*deform-on*; do echo "$(basename $d): accel_update_ms $(awk -F, 'NR>11 {s+=$13; n++} END {printf "%.4f", s/n}' $d/timings.csv)"; done | sort > $R/update.txt; cat $R/update.txt
+  python3 tools/scope_table.py $R/s/* > $R/scopes.md 2>&1; grep -E "^\| (scope|gbuffer \||shadow \||shadow/shadow_rays/trace|ssr \||device_trace \||trace \||hit_shade \||hit_shade/hit_shadow_rays/trace|resolve \|)" $R/scopes.md
+  for cfg in hybrid-rt-cuda rt-rt-cuda hybrid-cube-cuda hybrid-rt-gl; do n=0; for f in $R/img-base-$cfg/frame_*.png; do cmp -s $f $R/img-new-$cfg/$(basename $f) && n=$((n+1)) || echo "$cfg DIFFERENT $(basename $f): $(glint compare $f $R/img-new-$cfg/$(basename $f) 2>&1 | tail -1)"; done; echo "$cfg: $n frames byte-equal to base"; done
+  for bin in base new; do echo "$bin accel-bench:"; grep -E "^(structure|cuda-)" $R/ab-$bin.txt; grep -iE "refit|rebuild" $R/ab-$bin.txt | grep -E "^cuda|^structure" | head; done
+  tail -25 $R/ab-new.txt
+  rm -rf $R/img-* $R/f/*/frame_*.png
+fi
