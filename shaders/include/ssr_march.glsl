@@ -79,6 +79,11 @@ float exit_parameter(Line line, vec2 lo, vec2 hi, vec2 inv_dp) {
 
 // Largest distance of a 4-neighbour of `pixel` from the plane through `p` with normal `n` (world
 // units; background neighbours are infinitely far): large on a silhouette, ~0 inside a surface.
+// Divided by the hit's pixel footprint it is scale-free; the trust test fails a hit from about 0.42
+// footprints on (silhouette_footprints 0.7), so that a neighbour across a crease (a pillar's corner,
+// a moulding's edge: under one footprint off the plane) or a sub-pixel step fails it too, not only a
+// silhouette; a trusted hit's four neighbours are then all on its surface as lit_at takes them
+// (kSamePlane). docs/ssr.md "Silhouettes, creases and steps".
 float neighbour_plane_distance(ivec2 pixel, vec3 p, vec3 n) {
   float largest = 0.0;
   const ivec2 offsets[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));

@@ -26,8 +26,13 @@ struct SsrSettings {
   // error there is a long way along the surface.
   float min_hit_cosine = 0.1f;
   // A hit pixel with a neighbour this many pixel footprints off the hit's tangent plane sits on a
-  // silhouette (what the ray meets may be the surface behind it): confidence 0 there, 1 at half.
-  float silhouette_footprints = 2.0f;
+  // silhouette (what the ray meets may be the surface behind it), a crease or a step of the surface:
+  // confidence 0 there, 1 at half, so hits fail from about 0.42 footprints on. With 2 (until
+  // 2026-11-27, failing from 1.2) hits beside mouldings, capitals and pillar edges passed: a neighbour
+  // across a right-angled crease or a sub-pixel step lies under a footprint off the plane, and those
+  // hits made sponza with every material reflective miss hybrid vs rt SSIM 0.998 (docs/perf.md,
+  // "Hits at silhouettes"). A ratio of the pixel's world size: no scene scale enters it.
+  float silhouette_footprints = 0.7f;
   // Rays longer on screen than this fraction of the screen diagonal lose confidence (0 at it, 1 at
   // three quarters of it): the longer the march, the more hidden space it crossed.
   float max_screen_fraction = 1.0f;

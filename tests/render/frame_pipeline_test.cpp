@@ -57,7 +57,9 @@ TEST_F(FramePipelineTest, WallInViewIsReflectedByTheFloorAndCountsMatchTheMask) 
   const MaskStats stats = mask_stats(pipeline);
   EXPECT_EQ(static_cast<int>(counts->failed), stats.failed) << "the failed-pixel counter is the mask's sum";
   EXPECT_GT(counts->reflective, 0u);
-  EXPECT_GT(stats.red_hits, 50) << "the wall's mirror image on the floor comes from SSR hits";
+  // 48 on llvmpipe; 70 with silhouette_footprints 2: the hits on the wall's bottom row, at its
+  // right-angled crease with the floor, now fail (docs/ssr.md "Silhouettes, creases and steps").
+  EXPECT_GT(stats.red_hits, 40) << "the wall's mirror image on the floor comes from SSR hits";
 
   // In the final image, the floor just below the wall's base is red (its reflection), while the same
   // floor with reflections off is dark grey.
