@@ -229,3 +229,29 @@ if [ "$STEP" = l ]; then
   tail -25 $R/ab-new.txt
   rm -rf $R/img-* $R/f/*/frame_*.png
 fi
+# m: SSR's silhouette term at 0.7 footprints (new) against the session's first binary (base): hybrid
+# against rt on the four scenes of issue 21 at 1280x720 with the cuda backend; tests; frames.
+if [ "$STEP" = m ]; then
+  ( timeout 300 glint_tests --gtest_brief=1 --gtest_filter='*Ssr*:*SSR*:*Hybrid*:GoldenImage*:*FramePipeline*:*DeterministicFrames*:*Adaptive*:*Auto*:*Tile*:*Glossy*' > $R/tests.log 2>&1; echo "tests rc=$?" >> $R/tests.log )
+  grep -E "FAILED|PASSED|tests from|rc=|golden" $R/tests.log | tail -10
+  for bin in base new; do g=glint; [ $bin = base ] && g=/tmp/w/glint-base
+    mkdir -p $R/$bin/compare
+    for scene in atrium atrium-simple sponza scenes/sponza-all-reflective.scene.json; do name=$(basename $scene .scene.json)
+      for mode in hybrid rt; do
+        timeout 120 $g render $scene --frames 1800,2100,2300,4400 --width 1280 --height 720 --backend cuda --reflections $mode \
+          --overwrite --out $R/$bin/$name-$mode > $R/render.log 2>&1 || { echo "$bin $name $mode failed"; tail -2 $R/render.log; }
+      done
+      for frame in 1800 2100 2300 4400; do f=$(printf 'frame_%05d.png' $frame)
+        $g compare $R/$bin/$name-hybrid/$f $R/$bin/$name-rt/$f --json $R/$bin/compare/${name}_${frame}.json > /dev/null 2>&1 || echo "compare $bin $name $frame failed"
+      done
+    done
+    echo "== $bin"; python3 tools/ssr_trust_table.py $R/$bin 2>&1 | tee $R/trust-$bin.md
+  done
+  for rep in 1 2; do for bin in base new; do g=glint; [ $bin = base ] && g=/tmp/w/glint-base
+    timeout 60 $g render atrium --backend cuda --reflections hybrid --width 1280 --height 720 --frames 2071:2110 --timings-only $common --shadows rt \
+      --deform off --out $R/f/$bin-cuda-hybrid-r$rep > $R/f.log 2>&1 || echo "frames $bin failed"
+  done; done
+  python3 tools/frame_table.py $R/f > $R/frames.md 2>&1; cat $R/frames.md
+  for d in $R/f/*; do echo "$(basename $d): rays $(awk -F, 'NR>11 {s+=$18; n++} END {printf "%.0f", s/n}' $d/timings.csv)"; done
+  find $R -name "frame_*.png" -delete
+fi
