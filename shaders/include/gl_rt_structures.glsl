@@ -3,7 +3,8 @@
 // TLAS leaves' instance indices; per BLAS leaf slot its triangle (corner indices and the triangle's
 // index in its mesh); the meshes' object-space vertices; one record per instance.
 // Storage bindings 21..24 and 28 (25..27 in gl_rt_kernel.glsl) and texture unit 20 are above every
-// binding the renderer's passes use, so a trace leaves their bindings alone. Keep in step with src/gl_rt/gl_rt_bindings.h.
+// binding the renderer's passes use, so a trace leaves their bindings alone. Keep in step with
+// src/gl_rt/gl_rt_bindings.h.
 // `readonly restrict`: nothing writes or aliases them during a trace, which lets a driver read them
 // through its read-only (non-coherent) cache path.
 

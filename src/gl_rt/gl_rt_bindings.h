@@ -1,7 +1,7 @@
 #pragma once
-// The shader-storage binding points (and the one texture unit) of the gl backend's kernels (shaders/include/gl_rt_*.glsl): above
-// every binding the renderer's passes use (0..18), so a trace leaves their bindings alone. Keep in
-// step with the shaders.
+// The shader-storage binding points (and the one texture unit) of the gl backend's kernels
+// (shaders/include/gl_rt_*.glsl): above every binding the renderer's passes use (0..18), so a trace
+// leaves their bindings alone. Keep in step with the shaders.
 #include <epoxy/gl.h>
 
 namespace glint::gl_rt {
