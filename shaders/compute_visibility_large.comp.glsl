@@ -3,9 +3,9 @@
 // Compute rasteriser, deferred triangles (ComputeVisibilityPass, both rounds): one invocation per
 // triangle the per-triangle dispatch left (large on screen, or reaching in front of the near plane or
 // out of the guard band). Round 0 clips it to the near plane and the guard band when needed, fans
-// the polygon into pieces and writes them to the large-triangle list for the tile dispatch; when
-// the list is full, the invocation rasterises the pieces itself and marks the triangle kOverflowed,
-// and does so again in round 1.
+// the polygon into pieces and writes them to the large-triangle list and their tiles to the chunk
+// list for the tile dispatch; when a list is full, the invocation rasterises the pieces itself and
+// marks the triangle kOverflowed, and does so again in round 1.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
@@ -15,7 +15,8 @@ layout(local_size_x = 64) in;
 #include "include/compute_raster.glsl"
 #include "include/compute_raster_large.glsl"
 
-uniform uint large_capacity;
+uniform uint large_capacity;  // entries of large_triangles
+uniform uint chunk_capacity;  // records of tile_chunks
 
 // A triangle clipped by 5 planes: 3 corners, at most one more per plane; 2 spare for rounding on
 // nearly degenerate polygons (writes beyond are dropped).
@@ -64,8 +65,9 @@ int clipped_polygon(uint triangle, out vec4 polygon[kMaxPolygon]) {
   return size;
 }
 
-const LargeTriangle kEmptyEntry = LargeTriangle(ivec4(0), ivec4(0), vec4(0.0), ivec4(0, 0, -1, -1));
-
+// Round 0: a listed triangle's pieces go to the large-triangle list and their tiles to the chunk
+// list, both reserved at once, so a triangle is either drawn by the tile dispatch or (a list full)
+// by this invocation alone in both rounds, never half and half.
 void rasterise_deferred(uint slot) {
   const uint entry = deferred[slot];
   const uint triangle = entry & ~kOverflowed;
@@ -80,18 +82,27 @@ void rasterise_deferred(uint slot) {
       if (setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t)) raster_box(t, triangle);
     return;
   }
+  // The set-up is repeated below rather than kept: an array of pieces would live in local memory.
+  uint chunks = 0u;
+  for (uint k = 0u; k < pieces; ++k)
+    if (setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t)) chunks += chunk_count_of(tile_total(t.box));
   const uint first = atomicAdd(large_count, pieces);
-  const bool listed = first + pieces <= large_capacity;
+  const uint first_chunk = atomicAdd(chunk_count, chunks);
+  const bool listed = first + pieces <= large_capacity && first_chunk + chunks <= chunk_capacity;
+  uint record = first_chunk;
   for (uint k = 0u; k < pieces; ++k) {
-    const bool covers = setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t);
-    if (listed) {
-      large_triangles[first + k] = covers ? pack_large_triangle(t, triangle) : kEmptyEntry;
-    } else {
-      if (first + k < large_capacity) large_triangles[first + k] = kEmptyEntry;  // the scan reads every slot
-      if (covers) raster_box(t, triangle);
+    if (!setup_triangle(polygon[0], polygon[k + 1u], polygon[k + 2u], t)) continue;
+    if (!listed) {
+      raster_box(t, triangle);
+      continue;
     }
+    large_triangles[first + k] = pack_large_triangle(t, triangle);
+    const uint tiles = tile_total(t.box), per_chunk = chunk_tiles(tiles);
+    for (uint tile = 0u; tile < tiles; tile += per_chunk) tile_chunks[record++] = uvec2(first + k, tile);
   }
   if (!listed) {
+    // The tile dispatch runs over every record up to the count: the reserved ones say "nothing".
+    for (uint r = first_chunk; r < min(first_chunk + chunks, chunk_capacity); ++r) tile_chunks[r] = uvec2(kNoEntry, 0u);
     deferred[slot] = entry | kOverflowed;
     atomicAdd(overflowed, 1u);
   }

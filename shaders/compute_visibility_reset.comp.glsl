@@ -15,9 +15,9 @@ void main() {
   if (i == 0u) {
     large_count = 0u;
     overflowed = 0u;
-    tile_count = 0u;
+    chunk_count = 0u;
     deferred_count = 0u;
-    tile_dispatch = uint[4](0u, 1u, 1u, 0u);      // the scan writes it
+    tile_dispatch = uint[4](0u, 1u, 1u, 0u);      // compute_visibility_chunk_dispatch writes it
     deferred_dispatch = uint[4](0u, 1u, 1u, 0u);  // x counted up by the per-triangle dispatch
   }
   const uint threads = gl_NumWorkGroups.x * gl_WorkGroupSize.x;  // fewer than pixels on huge targets

@@ -1,8 +1,9 @@
 #version 450 core
 #include "include/compute_raster_extensions.glsl"
-// Compute rasteriser, large triangles (ComputeVisibilityPass, both rounds): one work group per
-// 8x8-pixel tile of each large-triangle entry's pixel box (numbered by the scan), one invocation
-// per pixel, so a triangle over the whole screen spreads over as many groups as it has tiles.
+// Compute rasteriser, large triangles (ComputeVisibilityPass, both rounds): one work group per record
+// of the chunk list, one invocation per pixel of an 8x8-pixel tile; the group walks the record's
+// tiles of its entry (chunk_tiles of them), so a triangle over the whole screen spreads over many
+// groups and a few-tile one takes one group that loads the entry once.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "include/frame_constants.glsl"
@@ -12,25 +13,19 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "include/compute_raster.glsl"
 #include "include/compute_raster_large.glsl"
 
-uniform uint large_capacity;
-
-const int kTileSize = 8;
+uniform uint chunk_capacity;
 
 void main() {
-  const uint tile = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  if (tile >= tile_count) return;
-  // The entry holding the tile: the last whose first tile is not after it (entries without tiles
-  // share their start with the next one and are skipped that way).
-  uint lo = 0u, hi = min(large_count, large_capacity) - 1u;
-  while (lo < hi) {
-    const uint mid = (lo + hi + 1u) >> 1;
-    if (tile_starts[mid] <= tile) lo = mid; else hi = mid - 1u;
-  }
+  const uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  if (index >= min(chunk_count, chunk_capacity)) return;
+  const uvec2 record = tile_chunks[index];
+  if (record.x == kNoEntry) return;
   uint triangle;
-  const ScreenTriangle t = unpack_large_triangle(large_triangles[lo], triangle);
-  const uint in_entry = tile - tile_starts[lo];
-  const uint tiles_x = uint((t.box.z - t.box.x + kTileSize) / kTileSize);
-  const ivec2 pixel = t.box.xy + kTileSize * ivec2(in_entry % tiles_x, in_entry / tiles_x) + ivec2(gl_LocalInvocationID.xy);
-  if (any(greaterThan(pixel, t.box.zw))) return;
-  raster_pixel(t, pixel, triangle);
+  const ScreenTriangle t = unpack_large_triangle(large_triangles[record.x], triangle);
+  const uint across = tiles_across(t.box), tiles = tile_total(t.box);
+  const uint end = min(record.y + chunk_tiles(tiles), tiles);
+  for (uint tile = record.y; tile < end; ++tile) {
+    const ivec2 pixel = t.box.xy + kTileSize * ivec2(tile % across, tile / across) + ivec2(gl_LocalInvocationID.xy);
+    if (all(lessThanEqual(pixel, t.box.zw))) raster_pixel(t, pixel, triangle);
+  }
 }

@@ -47,6 +47,24 @@ void raster_box(ScreenTriangle t, uint triangle) {
     for (int x = t.box.x; x <= t.box.z; ++x) raster_pixel(t, ivec2(x, y), triangle);
 }
 
+// The tile dispatch's tiles: 8x8 pixels (its work group), numbered row by row over the entry's pixel
+// box from its lower left corner.
+const int kTileSize = 8;
+uint tiles_across(ivec4 box) { return uint((box.z - box.x + kTileSize) / kTileSize); }
+uint tile_total(ivec4 box) { return tiles_across(box) * uint((box.w - box.y + kTileSize) / kTileSize); }
+
+// How many consecutive tiles of an entry of `tiles` tiles one work group walks: 8 (most entries,
+// a few tiles, take one group; a group's loads of the entry are shared by 8 tiles), more for a huge
+// entry, so that one piece never has more than 256 records: the large dispatch writes a piece's
+// records one by one in one invocation.
+const uint kMinChunkTiles = 8u;
+const uint kMaxChunksPerPiece = 256u;
+uint chunk_tiles(uint tiles) { return max(kMinChunkTiles, (tiles + kMaxChunksPerPiece - 1u) / kMaxChunksPerPiece); }
+uint chunk_count_of(uint tiles) {
+  const uint per_chunk = chunk_tiles(tiles);
+  return (tiles + per_chunk - 1u) / per_chunk;
+}
+
 LargeTriangle pack_large_triangle(ScreenTriangle t, uint triangle) {
   return LargeTriangle(ivec4(t.a, t.b), ivec4(t.c, int(triangle), 0), vec4(t.z, 0.0), t.box);
 }

@@ -8,7 +8,11 @@
 //   deferred    draw-order numbers of the triangles the per-triangle dispatch left to the large one
 //               (large on screen, or to be clipped); kOverflowed is set on those that found the
 //               large-triangle list full and are rasterised by their own invocation
-//   large_triangles, tile_starts   the large-triangle list and each entry's first tile
+//   large_triangles  the large-triangle list
+//   tile_chunks  the tile dispatch's work, one work group each: a large-triangle entry and the first
+//               of the entry's 8x8-pixel tiles the group walks (chunk_tiles of them from there, in
+//               compute_raster_large.glsl); kNoEntry in a record the large dispatch reserved but
+//               could not use
 //   counters    list sizes and the indirect dispatches' arguments
 //   instance_first_triangle   instance i's triangles are [first[i], first[i + 1]) in draw order
 //   touched     per triangle: the run stamp when round 0 found it nearest at some pixel (small
@@ -35,11 +39,11 @@ layout(std430, binding = 12) buffer DepthKeys { uint depth_keys[]; };
 layout(std430, binding = 13) buffer Winners { uint winners[]; };
 #endif
 layout(std430, binding = 14) buffer LargeTriangles { LargeTriangle large_triangles[]; };
-layout(std430, binding = 15) buffer TileStarts { uint tile_starts[]; };
+layout(std430, binding = 15) buffer TileChunks { uvec2 tile_chunks[]; };
 layout(std430, binding = 16) buffer Counters {  // the twin of Counters in compute_visibility_pass.cpp
   uint large_count;     // entries asked for (beyond the capacity: some triangles overflowed)
   uint overflowed;      // triangles rasterised by their own invocation
-  uint tile_count;
+  uint chunk_count;     // tile chunks asked for (beyond the chunk capacity: some triangles overflowed)
   uint deferred_count;
   uint tile_dispatch[4];      // glDispatchComputeIndirect's x, y, z (and padding)
   uint deferred_dispatch[4];  // x grows by one per 64 deferred triangles, up to kMaxGroupsX; y = z = 1
@@ -52,6 +56,7 @@ layout(std430, binding = 19) buffer Touched { uint touched[]; };
 
 const uint kNothingDrawn = 0xFFFFFFFFu;
 const uint kOverflowed = 0x80000000u;  // in deferred[]; triangle numbers stay below it
+const uint kNoEntry = 0xFFFFFFFFu;     // in tile_chunks[]: a record nobody draws
 const uint kMaxGroupsX = 65535u;       // GL's guaranteed limit per dispatch dimension
 const uint kDeferredGroupSize = 64u;   // compute_visibility_large.comp.glsl
 

@@ -24,8 +24,11 @@
 //              go to the deferred list (round 0)
 //   large      one invocation per deferred triangle: clip to the near plane and the guard band, fan
 //              the polygon, append the pieces to the large-triangle list (round 0)
-//   scan       one work group: each entry's 8x8-pixel tiles, prefix-summed, the tile dispatch's size
-//   tiles      one work group per (entry, tile), one invocation per pixel, 64-bit edge functions
+//              and their 8x8-pixel tiles to the chunk list, records of up to 8 tiles (more for a
+//              huge piece: at most 256 records a piece)
+//   chunk_dispatch  one invocation: the tile dispatch's size from the chunk count
+//   tiles      one work group per chunk record, one invocation per pixel of a tile, walking the
+//              record's tiles; 64-bit edge functions
 //   triangles (only those round 0 found nearest somewhere), large and tiles again for round 1
 //   over the same lists (two-round machines only); then
 //   ids        one invocation per pixel: the kept triangle's id into the id image.
@@ -34,7 +37,8 @@
 // SMs (0.20 ms at 1280x720, 0.79 ms at 2560x1440 on an H200, where the ids dispatch replaces it).
 // Coverage is exact (integer edge functions at pixel centres) with llvmpipe's fill rule, so
 // triangles sharing an edge leave no crack and cover no centre twice. When the large-triangle list
-// is full, a deferred triangle is rasterised by its own invocation in both rounds: slow but correct.
+// or the chunk list is full, a deferred triangle is rasterised by its own invocation in both rounds:
+// slow but correct.
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
@@ -48,6 +52,9 @@ struct ComputeVisibilityOptions {
   // Entries of the large-triangle list; 0: one per 8 pixels, at least 16384 (the .cpp says why).
   // Tests make it small to exercise the full-list path.
   std::uint32_t large_triangle_capacity = 0;
+  // Records of the tile dispatch's chunk list; 0: twice the large-triangle capacity. Tests make it
+  // small to exercise its full-list path.
+  std::uint32_t tile_chunk_capacity = 0;
   // false: the two 32-bit rounds even where 64-bit atomics exist (tests compare the two).
   bool use_64_bit_atomics = true;
 };
@@ -56,7 +63,7 @@ struct ComputeVisibilityOptions {
 struct ComputeVisibilityStats {
   std::uint32_t deferred = 0;       // triangles left to the large-triangle dispatch
   std::uint32_t large_entries = 0;  // entries written (clipped triangles give up to 6)
-  std::uint32_t tiles = 0;          // 8x8-pixel tiles the tile dispatch ran over
+  std::uint32_t chunks = 0;         // records of the chunk list written (each up to 8 tiles or more)
   std::uint32_t overflowed = 0;     // triangles rasterised by their own invocation (list full)
 };
 
@@ -91,16 +98,18 @@ private:
   bool one_round_;  // before the programs: it picks their variant
   std::uint32_t triangle_count_ = 0;
   std::uint32_t instance_count_ = 0;
-  std::uint32_t capacity_ = 0;
+  std::uint32_t capacity_ = 0;        // large-triangle entries
+  std::uint32_t chunk_capacity_ = 0;  // chunk records
   GLuint reset_groups_ = 0;  // of the reset dispatch, set once: the targets keep the size the buffers have
   GlBuffer depth_keys_, winners_;          // one uint per pixel each; one_round_: one uint64 in depth_keys_, no winners_
-  GlBuffer large_triangles_, tile_starts_;  // capacity_ entries each
+  GlBuffer large_triangles_;                // capacity_ entries
+  GlBuffer tile_chunks_;                    // chunk_capacity_ records
   GlBuffer counters_;                       // ComputeVisibilityCounters (the .cpp), indirect dispatch inside
   GlBuffer instance_first_triangle_;        // instance_count_ + 1 uints
   GlBuffer deferred_;                       // triangle_count_ + 1 uints: room for every triangle
   GlBuffer touched_;                        // triangle_count_ + 1 uints: run stamps (two rounds only)
   std::uint32_t run_stamp_ = 0;             // of the last two-round run; touched_ starts at 0
-  ShaderProgram reset_program_, triangle_program_, large_program_, scan_program_, tile_program_, ids_program_, resolve_program_;
+  ShaderProgram reset_program_, triangle_program_, large_program_, chunk_dispatch_program_, tile_program_, ids_program_, resolve_program_;
   GlFramebuffer framebuffer_;
   GlVertexArray empty_vertex_array_;
 };

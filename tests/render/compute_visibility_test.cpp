@@ -325,7 +325,8 @@ TEST_F(ComputeVisibility, TriangleLargerThanTheScreenCoversEveryPixel) {
   expect_same_visibility(compare(scene, raster, computed), 80 * 48);
   ASSERT_TRUE(computed.stats);
   EXPECT_EQ(computed.stats->deferred, 2u);
-  EXPECT_GE(computed.stats->tiles, 2u * 10u * 6u);  // both cover all 10 x 6 tiles of 8 x 8 pixels
+  // Each covers all 10 x 6 tiles of 8 x 8 pixels, and a record holds at most 8 of a triangle's tiles.
+  EXPECT_GE(computed.stats->chunks, 2u * 8u);
 }
 
 // A ramp through the near plane inside the view: its near corners are behind the camera, and GL
@@ -489,19 +490,25 @@ PassOutput run_pass(const Scene& scene, const FrameState& state, int width, int 
           read_texture_rgbaf(targets.depth.id(), kDepthFormat, width, height), pass.read_stats()};
 }
 
-// With a large-triangle list too small, the triangles that find it full are drawn by their own
-// invocation in both rounds: the same ids and depths, bit for bit.
+// With a large-triangle list or a chunk list too small, the triangles that find it full are drawn
+// by their own invocation in both rounds: the same ids and depths, bit for bit.
 TEST_F(ComputeVisibility, FullLargeTriangleListGivesTheSameImages) {
   const Scene scene = make_preset("atrium-simple");
   const FrameState state = WalkthroughAnimation(scene).at(4400);
   const PassOutput listed = run_pass(scene, state, 160, 90, {});
-  const PassOutput full = run_pass(scene, state, 160, 90, {.large_triangle_capacity = 3});
   EXPECT_EQ(listed.stats.overflowed, 0u);
   EXPECT_GT(listed.stats.large_entries, 3u);
-  EXPECT_GT(full.stats.overflowed, 0u);
-  EXPECT_LE(full.stats.large_entries, 3u);
-  EXPECT_TRUE(listed.ids == full.ids);
-  EXPECT_TRUE(listed.depth.pixels == full.depth.pixels);
+  EXPECT_GT(listed.stats.chunks, 3u);
+  const PassOutput full_entries = run_pass(scene, state, 160, 90, {.large_triangle_capacity = 3});
+  EXPECT_GT(full_entries.stats.overflowed, 0u);
+  EXPECT_LE(full_entries.stats.large_entries, 3u);
+  const PassOutput full_chunks = run_pass(scene, state, 160, 90, {.tile_chunk_capacity = 3});
+  EXPECT_GT(full_chunks.stats.overflowed, 0u);
+  EXPECT_LE(full_chunks.stats.chunks, 3u);
+  for (const PassOutput* full : {&full_entries, &full_chunks}) {
+    EXPECT_TRUE(listed.ids == full->ids);
+    EXPECT_TRUE(listed.depth.pixels == full->depth.pixels);
+  }
 }
 
 // Where the driver has 64-bit atomics (NVIDIA), one round of {depth, triangle} minima must keep what
@@ -522,9 +529,11 @@ TEST_F(ComputeVisibility, OneRoundOf64BitAtomicsEqualsTwoRounds) {
   }
   for (const auto& [scene, state] : cases) {
     for (const std::uint32_t capacity : {0u, 3u}) {
-      const PassOutput one = run_pass(*scene, state, 203, 117, {.large_triangle_capacity = capacity});
-      const PassOutput two =
-          run_pass(*scene, state, 203, 117, {.large_triangle_capacity = capacity, .use_64_bit_atomics = false});
+      const PassOutput one =
+          run_pass(*scene, state, 203, 117, {.large_triangle_capacity = capacity, .tile_chunk_capacity = capacity});
+      const PassOutput two = run_pass(
+          *scene, state, 203, 117,
+          {.large_triangle_capacity = capacity, .tile_chunk_capacity = capacity, .use_64_bit_atomics = false});
       EXPECT_TRUE(one.ids == two.ids) << "capacity " << capacity;
       EXPECT_TRUE(one.depth.pixels == two.depth.pixels) << "capacity " << capacity;
       EXPECT_EQ(one.stats.large_entries, two.stats.large_entries);
