@@ -104,6 +104,8 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   options_ = options;
   shape_ = rt::scene_shape(scene);
   blases_.build(scene, options);
+  refitted_on_gpu_.assign(scene.meshes.size(), false);
+  gpu_refits_ = 0;
   // Binned SAH like the cpu backend's TLAS, whatever the BLAS builder.
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
   structures_.upload_all(blases_, tlas_);
@@ -115,15 +117,53 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
 
 void GlRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
   require_built("update()");
-  rt::check_update(name(), shape_, scene, dirty_meshes);
-  blases_.check_refittable(scene, dirty_meshes, policy, name());
+  // Meshes the GPU refitted since their last upload join the dirty ones: their host BVHs and positions
+  // are older than the GL buffers', from which the TLAS is built here.
+  std::vector<uint32_t> updated(dirty_meshes.begin(), dirty_meshes.end());
+  for (uint32_t m = 0; m < refitted_on_gpu_.size(); ++m)
+    if (refitted_on_gpu_[m] && std::find(updated.begin(), updated.end(), m) == updated.end()) updated.push_back(m);
+  rt::check_update(name(), shape_, scene, updated);
+  blases_.check_refittable(updated, policy, name());
   const Stopwatch watch;
-  const std::vector<bool> rebuilt = blases_.update(scene, dirty_meshes, policy);
+  const std::vector<bool> rebuilt = blases_.update(scene, updated, policy);
   // The TLAS is small: built again over the new BLAS boxes and the current transforms (the
   // walkthrough's moving instances), rather than refitted.
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
-  structures_.upload_update(blases_, dirty_meshes, rebuilt, tlas_);
+  structures_.upload_update(blases_, updated, rebuilt, tlas_);
   set_tlas_node_count();
+  for (uint32_t m : updated) refitted_on_gpu_[m] = false;
+  last_update_ms_ = watch.elapsed_ms();
+}
+
+rt::GlTracing::VertexRange GlRayTracer::gl_positions(std::uint32_t mesh) {
+  require_built("gl_positions()");
+  if (mesh >= structures_.mesh_count())
+    fail("rt gl: mesh index {} out of range ({} meshes)", mesh, structures_.mesh_count());
+  const GlStructureBuffers::BlasRegion& region = structures_.region(mesh);
+  return {structures_.vertices(), std::uint64_t{region.vertex_offset} * sizeof(vec4), region.vertex_count};
+}
+
+void GlRayTracer::update_gl(std::span<const std::uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
+  require_built("update_gl()");
+  if (policy != rt::UpdatePolicy::refit)
+    fail("rt gl: update policy '{}' builds on the host from host vertices; a GL-side update refits only (use refit, "
+         "or update() with the scene)",
+         rt::update_policy_name(policy));
+  std::vector<std::uint32_t> meshes;
+  meshes.reserve(dirty_meshes.size());
+  std::vector<bool> listed(structures_.mesh_count(), false);
+  for (const std::uint32_t m : dirty_meshes) {
+    if (m >= structures_.mesh_count())
+      fail("rt gl: dirty mesh index {} out of range ({} meshes)", m, structures_.mesh_count());
+    // Twice in one dispatch would make four arrivals at its nodes.
+    if (!listed[m]) meshes.push_back(m);
+    listed[m] = true;
+  }
+  blases_.check_refittable(meshes, policy, name());
+  const Stopwatch watch;
+  refit_.refit(structures_, meshes);
+  for (const std::uint32_t m : meshes) refitted_on_gpu_[m] = true;
+  gpu_refits_ += meshes.size();
   last_update_ms_ = watch.elapsed_ms();
 }
 
@@ -215,9 +255,12 @@ rt::RayTracerStats GlRayTracer::stats() const {
   stats.build_ms = build_ms_;
   stats.last_update_ms = last_update_ms_;
   stats.rebuilds = blases_.rebuilds();
-  stats.refits = blases_.refits();
-  stats.blas_sah_drift = blases_.sah_drift();
-  // GPU memory: the structure buffers (the host keeps its own copy of the BVHs and meshes too).
+  stats.refits = blases_.refits() + gpu_refits_;
+  // The host measures the drift on its own BVHs, which a GPU refit leaves behind.
+  if (std::find(refitted_on_gpu_.begin(), refitted_on_gpu_.end(), true) == refitted_on_gpu_.end())
+    stats.blas_sah_drift = blases_.sah_drift();
+  // GPU memory: the structure buffers, the GPU refit's included (the host keeps its own copy of the
+  // BVHs and meshes too).
   stats.memory_bytes = structures_.bytes();
   return stats;
 }

@@ -7,7 +7,9 @@
 // Structures: one BLAS per mesh built on the CPU with AccelOptions::builder and a binned-SAH TLAS
 // over Scene::instances, as the cpu backend (mesh_blases.h), flattened into GL buffers
 // (gl_structure_buffers.h). update() rebuilds or refits the dirty BLASes on the CPU by policy, builds
-// the TLAS again and uploads only the dirty meshes' ranges and the TLAS.
+// the TLAS again and uploads only the dirty meshes' ranges and the TLAS. update_gl() (GlTracing), after
+// a GL-side deformer wrote the positions into gl_positions(), refits the BLASes and the TLAS on the GPU
+// instead (gl_refit.h): no host refit, no upload, nothing waits.
 //
 // Tracing: shaders/gl_rt_closest.comp.glsl and gl_rt_any.comp.glsl, one invocation per ray, walking
 // the TLAS and each BLAS entered the way accel/traverse.h does with accel's watertight triangle test
@@ -22,6 +24,7 @@
 // buffers at bindings 20..28 (gl_rt_bindings.h) and its program; the renderer's bindings are lower.
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "gl_rt/gl_refit.h"
 #include "gl_rt/gl_structure_buffers.h"
 #include "gl_rt/mesh_blases.h"
 #include "rt/ray_tracer.h"
@@ -43,6 +46,8 @@ public:
   explicit GlRayTracer(std::uint32_t max_groups_per_dispatch = kMaxGroupsPerDispatch);
 
   void build(const Scene& scene, const rt::AccelOptions& options) override;
+  // The host path (--deform-on cpu). Meshes refitted on the GPU since their last host update are
+  // updated from `scene` too, dirty or not: the host's copy of their BVHs is older than the GPU's.
   void update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
   // Stage the rays in a scratch GL buffer, dispatch, read back (the host waits for the GPU). Also
   // glint::Error when a traversal stack overflowed in this or an unchecked earlier GL-side trace.
@@ -57,11 +62,20 @@ public:
                         std::uint32_t capacity) override;
   void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
                     std::uint32_t capacity) override;
+  // rt::GlTracing: the vertex range of `mesh`; update_gl enqueues the GPU refit (GlRefit) of the
+  // dirty meshes' BLASes and the TLAS (a duplicate in the list is refitted once). stats() counts these
+  // refits; last_update_ms is then the host's enqueueing, and blas_sah_drift is absent while a mesh's
+  // boxes live only on the GPU (the host cannot measure them without reading them back).
+  VertexRange gl_positions(std::uint32_t mesh) override;
+  void update_gl(std::span<const std::uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 
   // Reads the stack-overflow flag the GL-side traces since the last check set (waits for them) and
   // clears it: glint::Error when a walk would have pushed past 64 entries (a BVH deeper than
   // accel::kMaxBvhDepth; glint's builders stay within it, so this is a safety net).
   void check_stack_overflow() const;
+
+  // The GL buffers and where each BLAS lives in them: for tests, which read the nodes back.
+  const GlStructureBuffers& structures() const { return structures_; }
 
 private:
   // A compiled kernel and its uniforms' locations.
@@ -85,11 +99,15 @@ private:
   Kernel closest_;
   Kernel any_;
   GlBuffer flag_;  // one uint: a stack overflowed
+  GlRefit refit_;
   rt::AccelOptions options_;
   rt::SceneShape shape_;
   MeshBlases blases_;
   accel::Tlas tlas_;
   GlStructureBuffers structures_;
+  // Per mesh: refitted on the GPU since its last host upload (its host BVH and positions are stale).
+  std::vector<bool> refitted_on_gpu_;
+  std::size_t gpu_refits_ = 0;  // BLAS refits by update_gl since build()
   bool built_ = false;
   double build_ms_ = 0.0;
   double last_update_ms_ = 0.0;

@@ -16,6 +16,13 @@ inline constexpr GLuint kRayCountBinding = 27;      // its count: the buffer's f
 inline constexpr GLuint kFlagBinding = 28;          // the stack-overflow flag
 inline constexpr GLuint kHighestBinding = kFlagBinding;
 
+// The GPU refit's own buffers (gl_refit.h, shaders/gl_rt_refit_*.comp.glsl) take the trace's per-call
+// bindings: a refit is no trace, and the structures' bindings 21..24 stay as bind() sets them.
+inline constexpr GLuint kRefitNodeBinding = kRayBinding;            // the node array, written
+inline constexpr GLuint kRefitLinkBinding = kResultBinding;         // per node: parent, arrival counter
+inline constexpr GLuint kRefitJobBinding = kRayCountBinding;        // the BLASes of a refit
+inline constexpr GLuint kRefitTransformBinding = kFlagBinding;      // per instance: object_to_world
+
 // The texture unit of every BVH's accel::BvhNode array, TLAS first, read as a buffer texture (two
 // RGBA32UI texels a node) rather than a storage buffer: the walk's node loads then go through the
 // texture cache, which made the closest-hit trace 0.52 -> 0.47 ms on an H100 (docs/perf.md, "Tenth

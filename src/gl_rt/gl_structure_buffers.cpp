@@ -60,7 +60,7 @@ bool GlStructureBuffers::fits(const MeshBlases& meshes, uint32_t mesh) const {
 void GlStructureBuffers::gather_leaf_triangles(const MeshBlases& meshes, uint32_t mesh,
                                                std::vector<glm::uvec4>& out) const {
   const MeshBlases::Mesh& source = meshes.meshes()[mesh];
-  const uint32_t base = vertex_offsets_[mesh];
+  const uint32_t base = regions_[mesh].vertex_offset;
   out.clear();
   out.reserve(source.bvh.prim_indices.size());
   for (const uint32_t prim : source.bvh.prim_indices) {
@@ -76,17 +76,18 @@ void GlStructureBuffers::upload_all(const MeshBlases& meshes, const accel::Tlas&
   tlas_ref_capacity_ = std::max(checked_u32(tlas.bvh.prim_indices.size(), "TLAS references"),
                                 checked_u32(instance_count, "instances"));
   regions_.assign(all.size(), {});
-  vertex_offsets_.assign(all.size(), 0);
   size_t nodes = tlas_node_capacity_, slots = 0, vertices = 0;
   for (size_t m = 0; m < all.size(); ++m) {
     const size_t triangle_count = all[m].indices.size() / 3;
     BlasRegion& region = regions_[m];
     region.node_offset = checked_u32(nodes, "BVH nodes");
     region.node_capacity = std::max(checked_u32(all[m].bvh.nodes.size(), "BVH nodes"), node_room(triangle_count));
+    region.node_count = static_cast<uint32_t>(all[m].bvh.nodes.size());
     region.slot_offset = checked_u32(slots, "BVH references");
     region.slot_capacity =
         std::max(checked_u32(all[m].bvh.prim_indices.size(), "BVH references"), checked_u32(triangle_count, "triangles"));
-    vertex_offsets_[m] = checked_u32(vertices, "vertices");
+    region.vertex_offset = checked_u32(vertices, "vertices");
+    region.vertex_count = checked_u32(all[m].positions.size(), "vertices");
     nodes += region.node_capacity;
     slots += region.slot_capacity;
     vertices += all[m].positions.size();
@@ -112,10 +113,14 @@ void GlStructureBuffers::upload_all(const MeshBlases& meshes, const accel::Tlas&
   vertices_ = make_storage(vertex_data);
   leaf_triangles_ = make_storage(leaf_data);
   instances_ = make_storage(std::vector<GlInstanceRecord>(instance_count));
-  bytes_ = std::max<size_t>(nodes, 1) * sizeof(accel::BvhNode) +
+  // Counters start at 0; the links of every BVH are written below and by upload_tlas_and_instances.
+  links_ = make_storage(std::vector<glm::uvec2>(nodes, glm::uvec2(kNoParent, 0u)));
+  transforms_ = make_storage(std::vector<mat4>(instance_count, mat4(1.0f)));
+  for (uint32_t m = 0; m < all.size(); ++m) write_links(all[m].bvh, regions_[m].node_offset);
+  bytes_ = std::max<size_t>(nodes, 1) * (sizeof(accel::BvhNode) + sizeof(glm::uvec2)) +
            std::max<size_t>(tlas_ref_capacity_, 1) * sizeof(uint32_t) + std::max<size_t>(vertices, 1) * sizeof(vec4) +
            std::max<size_t>(slots, 1) * sizeof(glm::uvec4) +
-           std::max<size_t>(instance_count, 1) * sizeof(GlInstanceRecord);
+           std::max<size_t>(instance_count, 1) * (sizeof(GlInstanceRecord) + sizeof(mat4));
   upload_tlas_and_instances(meshes, tlas);
   check_gl("rt gl: uploading the structures");
 }
@@ -133,12 +138,15 @@ void GlStructureBuffers::upload_update(const MeshBlases& meshes, std::span<const
     const MeshBlases::Mesh& mesh = meshes.meshes()[m];
     vertex_scratch_.clear();
     for (const vec3& p : mesh.positions) vertex_scratch_.emplace_back(p, 1.0f);
-    write(vertices_, vertex_offsets_[m], std::span<const vec4>(vertex_scratch_));
+    write(vertices_, regions_[m].vertex_offset, std::span<const vec4>(vertex_scratch_));
     write(nodes_, regions_[m].node_offset, std::span<const accel::BvhNode>(mesh.bvh.nodes.data(), mesh.bvh.nodes.size()));
-    // A refit keeps the primitive order, so the leaf slots only change with a rebuild.
+    // A refit keeps the primitive order and the topology, so the leaf slots and the parent links only
+    // change with a rebuild.
     if (rebuilt[i]) {
       gather_leaf_triangles(meshes, m, leaf_scratch_);
       write(leaf_triangles_, regions_[m].slot_offset, std::span<const glm::uvec4>(leaf_scratch_));
+      write_links(mesh.bvh, regions_[m].node_offset);
+      regions_[m].node_count = static_cast<uint32_t>(mesh.bvh.nodes.size());
     }
   }
   upload_tlas_and_instances(meshes, tlas);
@@ -153,6 +161,9 @@ void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, con
   write(nodes_, 0, std::span<const accel::BvhNode>(tlas.bvh.nodes.data(), tlas.bvh.nodes.size()));
   write(tlas_refs_, 0, std::span<const uint32_t>(tlas.bvh.prim_indices.data(), tlas.bvh.prim_indices.size()));
   tlas_node_count_ = static_cast<uint32_t>(tlas.bvh.nodes.size());
+  // The host builds a new TLAS with every upload: its links too, so the GPU refit keeps its topology.
+  write_links(tlas.bvh, 0);
+  std::vector<mat4> transforms(tlas.instances.size());
   std::vector<GlInstanceRecord> records(tlas.instances.size());
   for (size_t i = 0; i < records.size(); ++i) {
     const accel::Instance& instance = tlas.instances[i];
@@ -161,8 +172,21 @@ void GlStructureBuffers::upload_tlas_and_instances(const MeshBlases& meshes, con
     records[i].node_offset = region.node_offset;
     records[i].slot_offset = region.slot_offset;
     records[i].node_count = static_cast<uint32_t>(meshes.meshes()[instance.blas].bvh.nodes.size());
+    transforms[i] = instance.object_to_world;
   }
   write(instances_, 0, std::span<const GlInstanceRecord>(records));
+  write(transforms_, 0, std::span<const mat4>(transforms));
+}
+
+void GlStructureBuffers::write_links(const accel::Bvh& bvh, uint32_t node_offset) {
+  link_scratch_.assign(bvh.nodes.size(), glm::uvec2(kNoParent, 0u));
+  for (uint32_t node = 0; node < bvh.nodes.size(); ++node) {
+    const accel::BvhNode& interior = bvh.nodes[node];
+    if (interior.is_leaf()) continue;
+    link_scratch_[interior.left()].x = node;
+    link_scratch_[interior.right()].x = node;
+  }
+  write(links_, node_offset, std::span<const glm::uvec2>(link_scratch_));
 }
 
 void GlStructureBuffers::bind() const {
@@ -171,6 +195,16 @@ void GlStructureBuffers::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLeafTriangleBinding, leaf_triangles_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instances_.id());
+}
+
+void GlStructureBuffers::bind_for_refit() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTlasRefBinding, tlas_refs_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLeafTriangleBinding, leaf_triangles_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceBinding, instances_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRefitNodeBinding, nodes_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRefitLinkBinding, links_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRefitTransformBinding, transforms_.id());
 }
 
 }  // namespace glint::gl_rt

@@ -10,12 +10,17 @@
 //                   one load each instead of a primitive index and then the triangle's indices.
 //   instances       GlInstanceRecord[]: per Scene instance its world-to-object transform and where
 //                   its BLAS is
+// and for the GPU refit (gl_refit.h), which only it reads:
+//   links           uvec2[] beside nodes: each node's parent (its index in its own BVH, kNoParent at a
+//                   root) and its arrival counter (0 between refits), written with the node's BVH
+//   transforms      mat4[]: per instance its object-to-world transform (its world box's rule)
 // Node indices inside a region stay local to their BVH (the walk adds the region's offset), so the
 // nodes are uploaded as accel built them. A region has room for the largest BVH its mesh can get
 // without split references (2 n - 1 nodes, n slots for n triangles), so an update writes the dirty
 // meshes' ranges in place with glNamedBufferSubData: vertices and nodes, and the leaf slots only after
 // a rebuild (a refit keeps the primitive order); a BVH that outgrows its region (sbvh's duplicated
-// references) makes the whole layout be made again.
+// references) makes the whole layout be made again. The parent links are computed once per layout of
+// a BVH (build, a host rebuild, every TLAS the host builds), so a GPU refit only reads them.
 #include "accel/tlas.h"
 #include "gl/gl_objects.h"
 #include "gl_rt/mesh_blases.h"
@@ -37,8 +42,19 @@ struct GlInstanceRecord {
 };
 static_assert(sizeof(GlInstanceRecord) == 80 && std::is_trivially_copyable_v<GlInstanceRecord>);
 
+// An index in the links of a BVH's root: it has no parent.
+inline constexpr uint32_t kNoParent = 0xFFFFFFFFu;
+
 class GlStructureBuffers {
 public:
+  // Where a mesh's BLAS and geometry are: its region of the node array (node_count of its
+  // node_capacity nodes in use) and of the leaf slots, and its vertices.
+  struct BlasRegion {
+    uint32_t node_offset = 0, node_capacity = 0, node_count = 0;
+    uint32_t slot_offset = 0, slot_capacity = 0;
+    uint32_t vertex_offset = 0, vertex_count = 0;
+  };
+
   // Lays out and uploads everything: every BLAS of `meshes`, their geometry, the TLAS and the
   // instances (new buffers). Needs the GL context current.
   void upload_all(const MeshBlases& meshes, const accel::Tlas& tlas);
@@ -52,32 +68,37 @@ public:
 
   // Binds the buffers at their binding points and the nodes' texture at its unit (gl_rt_bindings.h).
   void bind() const;
+  // Binds what the GPU refit reads and writes at its bindings (gl_rt_bindings.h, kRefit*).
+  void bind_for_refit() const;
+
+  const BlasRegion& region(uint32_t mesh) const { return regions_[mesh]; }
+  size_t mesh_count() const { return regions_.size(); }
+  GLuint nodes() const { return nodes_.id(); }
+  GLuint links() const { return links_.id(); }
+  GLuint vertices() const { return vertices_.id(); }
 
   uint32_t tlas_node_count() const { return tlas_node_count_; }
-  // Bytes of the five buffers.
+  // Bytes of the seven buffers.
   uint64_t bytes() const { return bytes_; }
 
 private:
-  struct BlasRegion {
-    uint32_t node_offset = 0, node_capacity = 0;
-    uint32_t slot_offset = 0, slot_capacity = 0;
-  };
-
   bool fits(const MeshBlases& meshes, uint32_t mesh) const;
   // The leaf slots of mesh `mesh`'s BVH as leaf_triangles entries.
   void gather_leaf_triangles(const MeshBlases& meshes, uint32_t mesh, std::vector<glm::uvec4>& out) const;
   void upload_tlas_and_instances(const MeshBlases& meshes, const accel::Tlas& tlas);
+  // The parent links of `bvh` (counters 0) into links_ at its region's first node.
+  void write_links(const accel::Bvh& bvh, uint32_t node_offset);
 
   std::vector<BlasRegion> regions_;
-  std::vector<uint32_t> vertex_offsets_;  // per mesh, into the vertex array
   uint32_t tlas_node_capacity_ = 0;
   uint32_t tlas_ref_capacity_ = 0;
   uint32_t tlas_node_count_ = 0;
-  GlBuffer nodes_, tlas_refs_, vertices_, leaf_triangles_, instances_;
+  GlBuffer nodes_, tlas_refs_, vertices_, leaf_triangles_, instances_, links_, transforms_;
   GlTexture node_texels_;  // a buffer texture over nodes_
   uint64_t bytes_ = 0;
   std::vector<vec4> vertex_scratch_;          // a dirty mesh's positions widened to vec4 for the upload
   std::vector<glm::uvec4> leaf_scratch_;      // a rebuilt mesh's leaf slots
+  std::vector<glm::uvec2> link_scratch_;      // a BVH's parent links
 };
 
 }  // namespace glint::gl_rt

@@ -32,6 +32,7 @@ void MeshBlases::build(const Scene& scene, const rt::AccelOptions& options) {
   meshes_.resize(scene.meshes.size());
   blases_.assign(scene.meshes.size(), accel::Blas{});
   for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    meshes_[m].name = scene.meshes[m].name;
     meshes_[m].positions = scene.meshes[m].positions;
     meshes_[m].indices = scene.meshes[m].indices;
     meshes_[m].deformable = scene.meshes[m].deformable;
@@ -40,10 +41,10 @@ void MeshBlases::build(const Scene& scene, const rt::AccelOptions& options) {
   rebuilds_ = refits_ = 0;
 }
 
-void MeshBlases::check_refittable(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
+void MeshBlases::check_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
                                   std::string_view backend) const {
   for (uint32_t m : dirty_meshes)
-    if (const std::string refusal = rt::update_refusal(backend, policy, options_.structure(), scene.meshes[m].name);
+    if (const std::string refusal = rt::update_refusal(backend, policy, options_.structure(), meshes_[m].name);
         !refusal.empty())
       fail("{}", refusal);
 }

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +24,7 @@ namespace glint::gl_rt {
 class MeshBlases {
 public:
   struct Mesh {
+    std::string name;  // the scene mesh's, for messages
     std::vector<vec3> positions;
     std::vector<uint32_t> indices;
     accel::Bvh bvh;
@@ -36,7 +38,7 @@ public:
 
   // glint::Error naming `backend` when `policy` refits and a dirty mesh's BVH cannot be refitted
   // (sbvh); call it before changing anything, so a refused update leaves the structures as they were.
-  void check_refittable(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
+  void check_refittable(std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy,
                         std::string_view backend) const;
 
   // Copies the dirty meshes' positions from `scene` (checked with rt::check_update and

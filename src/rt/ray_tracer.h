@@ -137,6 +137,23 @@ public:
   // occluded[i] = 1 when rays[i] hits anything within [t_min, t_max], else 0: one uint per ray.
   virtual void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
                             std::uint32_t capacity) = 0;
+
+  // Where mesh `mesh`'s object-space positions live in the tracer's GL vertex buffer: vertex_count
+  // vec4s (w unused) from offset_bytes of buffer `buffer`. A GL-side deformer writes them there (e.g.
+  // glCopyNamedBufferSubData of its own vec4 positions) before update_gl(). Ask again every frame: a
+  // host update may lay the buffers out anew. glint::Error before build() or out of range.
+  struct VertexRange {
+    std::uint32_t buffer = 0;
+    std::uint64_t offset_bytes = 0;
+    std::uint32_t vertex_count = 0;
+  };
+  virtual VertexRange gl_positions(std::uint32_t mesh) = 0;
+  // Like RayTracer::update, after a GL-side deformer rewrote gl_positions() of `dirty_meshes`: the
+  // structures are refitted on the GPU (GL compute, enqueued; the host never waits and nothing is
+  // copied from the host) and the instances keep the transforms of the last build or update. Only
+  // UpdatePolicy::refit is done on the GPU: rebuild and automatic are glint::Error (they build on the
+  // host, from host vertices); so is a structure that cannot be refitted.
+  virtual void update_gl(std::span<const std::uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
 };
 
 // A timed piece of GPU work a DeviceTracing call enqueued (a trace, an update): its GPU time is read
