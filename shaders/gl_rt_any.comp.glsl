@@ -7,7 +7,6 @@
 // "The gl backend's traversal"). The host reads the size from the program.
 layout(local_size_x = 32) in;
 
-const bool kAnyHit = true;
 #include "include/gl_rt_kernel.glsl"
 
 layout(std430, binding = 26) writeonly restrict buffer TracerOccluded { uint tracer_occluded[]; };
@@ -16,6 +15,5 @@ void main() {
   const uint i = ray_index();
   if (i == kInvalidIndex) return;
   const Ray ray = tracer_rays[i];
-  Hit unused;
-  tracer_occluded[i] = trace_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, unused) ? 1u : 0u;
+  tracer_occluded[i] = trace_occluded(ray.origin, ray.direction, ray.t_min, ray.t_max) ? 1u : 0u;
 }

@@ -6,7 +6,6 @@
 // "The gl backend's traversal"). The host reads the size from the program.
 layout(local_size_x = 32) in;
 
-const bool kAnyHit = false;
 #include "include/gl_rt_kernel.glsl"
 
 layout(std430, binding = 26) writeonly restrict buffer TracerHits { Hit tracer_hits[]; };
@@ -15,7 +14,5 @@ void main() {
   const uint i = ray_index();
   if (i == kInvalidIndex) return;
   const Ray ray = tracer_rays[i];
-  Hit hit;
-  trace_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, hit);
-  tracer_hits[i] = hit;
+  tracer_hits[i] = trace_closest(ray.origin, ray.direction, ray.t_min, ray.t_max);
 }

@@ -1,14 +1,7 @@
 // What both gl backend kernels share: the ray list of one trace (RayTracer::trace_closest/trace_any
 // on the host, rt::GlTracing on the renderer's GL buffers), its count, and which ray an invocation
-// traces. The includer declares `const bool kAnyHit` first (gl_rt_traverse.glsl).
+// traces.
 #include "include/gl_rt_traverse.glsl"
-
-struct Ray {  // accel::Ray
-  vec3 origin;
-  float t_min;
-  vec3 direction;
-  float t_max;
-};
 
 layout(std430, binding = 25) readonly restrict buffer TracerRays { Ray tracer_rays[]; };
 // The first uint of the caller's count buffer: how many rays the list holds, read here on the GPU.

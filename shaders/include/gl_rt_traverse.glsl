@@ -4,9 +4,15 @@
 // triangle test; accel::record_closer_hit's tie rule), so hits equal the cpu backend's up to rounding.
 // Each level descends to a leaf before it visits the leaf's contents ("while-while"): on an H100 the
 // gl backend's hybrid frame took 1.70 ms against 1.75 with one step per loop (docs/perf.md, "Tenth
-// round"); the CUDA walk in that form was slower, and keeps one step per loop. The includer declares `const bool kAnyHit` first: false for the closest
-// hit, true for the occlusion query, which returns at the first hit (a compile-time constant, so each
-// kernel compiles only its own walk).
+// round"); the CUDA walk in that form was slower, and keeps one step per loop.
+// Two entry points: trace_closest() and trace_occluded() (the occlusion query, which returns at the
+// first hit). Both are one walk whose `any_hit` argument is a literal at each call, so a compiler,
+// which inlines GLSL's functions, compiles each query's own walk as the constant it was before; the
+// argument (rather than a constant the includer declares) lets one shader hold both walks: the
+// reflection trace that also traces its hits' shadow rays (shaders/trace_hits_and_shadows.comp.glsl).
+// A render pass that includes this file traces inline: rt::GlTracing::bind_inline_tracing binds the
+// structures and sets tlas_node_count on its program.
+#include "include/accel_records.glsl"
 #include "include/gl_rt_structures.glsl"
 #include "include/gl_rt_triangle.glsl"
 
@@ -20,15 +26,6 @@ const uint kStackSize = 64u;
 // gamma(7) and the slack is 1 + 8 ulp >= 1 + 2 gamma(7): more slack only visits a few more boxes,
 // never changes a hit.
 const float kSlabFarScale = uintBitsToFloat(0x3F800008u);
-
-// accel::Hit, also the record the closest-hit kernel writes.
-struct Hit {
-  float t;
-  uint instance;
-  uint prim;
-  float u;
-  float v;
-};
 
 struct BoxRay {
   vec3 origin;
@@ -64,8 +61,8 @@ bool intersect_box(BoxRay ray, BvhNode node, float t_min, float t_max, out float
 // The step at an interior node (its children at node_offset + first and the one after), shared by
 // both levels: returns how many children the segment enters. 1: `next` is that child; 2: `next` is
 // the nearer one and far_index the other one's node, to be pushed.
-uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, float t_max, out BvhNode next,
-                    out uint far_index) {
+uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, float t_max, const bool any_hit,
+                    out BvhNode next, out uint far_index) {
   const uint left_index = node_offset + node.first;
   const BvhNode left = load_node(left_index);
   const BvhNode right = load_node(left_index + 1u);
@@ -74,7 +71,7 @@ uint enter_children(BvhNode node, uint node_offset, BoxRay ray, float t_min, flo
   const bool hit_right = intersect_box(ray, right, t_min, t_max, t_right);
   // The nearer child first, where the order can matter: the occlusion query stops at any hit, so it
   // skips the comparison and walks left first (shadow rays 4 % faster on the H200, 2026-11-26).
-  const bool right_first = hit_right && (!hit_left || (!kAnyHit && t_right < t_left));
+  const bool right_first = hit_right && (!hit_left || (!any_hit && t_right < t_left));
   next = right_first ? right : left;
   far_index = right_first ? left_index : left_index + 1u;
   return uint(hit_left) + uint(hit_right);
@@ -102,13 +99,13 @@ uint blas_stack_node[kStackSize];
     --stack_size;                                                             \
     node = load_node(stack[stack_size]);                                      \
     float entry;                                                              \
-    if (kAnyHit || intersect_box(box_ray, node, t_min, t_max, entry)) break;  \
+    if (any_hit || intersect_box(box_ray, node, t_min, t_max, entry)) break;  \
   }
 
 // One BLAS in the instance's object space. Closest hit: records a closer hit in `hit` (t, prim, u, v),
 // lowering t_max; returns whether it did. Any hit: returns true at the first triangle in range.
 bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min, inout float t_max,
-               inout Hit hit) {
+               const bool any_hit, inout Hit hit) {
   if (instance.node_count == 0u) return false;
   const BoxRay box_ray = make_box_ray(origin, direction);
   BvhNode node = load_node(instance.node_offset);
@@ -124,7 +121,8 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
     while (node.prim_count == 0u) {
       BvhNode next;
       uint far_index;
-      const uint entered = enter_children(node, instance.node_offset, box_ray, t_min, t_max, next, far_index);
+      const uint entered =
+          enter_children(node, instance.node_offset, box_ray, t_min, t_max, any_hit, next, far_index);
       if (entered == 2u) {
         if (stack_size == kStackSize) {
           tracer_stack_overflow = 1u;
@@ -147,7 +145,7 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
       if (!intersect_triangle(ray, mesh_vertices[corners.x].xyz, mesh_vertices[corners.y].xyz,
                               mesh_vertices[corners.z].xyz, t_min, t_max, t, u, v))
         continue;
-      if (kAnyHit) return true;
+      if (any_hit) return true;
       // accel::record_closer_hit: equal t keeps the hit found first (in this or an earlier instance).
       if (t == t_max && hit.prim != kInvalidIndex) continue;
       t_max = t;
@@ -167,7 +165,7 @@ bool walk_blas(TracerInstance instance, vec3 origin, vec3 direction, float t_min
 // mat4 x vec4 as (c0 x + c1 y) + (c2 z + c3 w), so t is the same in both spaces). Closest hit: `hit`
 // in RayTracer's convention (Hit{t = inf, instance = prim = kInvalidIndex} for a miss). Any hit:
 // returns whether anything lies within [t_min, t_max].
-bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hit hit) {
+bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, const bool any_hit, out Hit hit) {
   hit = Hit(kInfinity, kInvalidIndex, kInvalidIndex, 0.0, 0.0);
   if (tlas_node_count == 0u) return false;
   float t_max = ray_t_max;
@@ -183,7 +181,7 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
     while (node.prim_count == 0u) {
       BvhNode next;
       uint far_index;
-      const uint entered = enter_children(node, 0u, box_ray, t_min, t_max, next, far_index);
+      const uint entered = enter_children(node, 0u, box_ray, t_min, t_max, any_hit, next, far_index);
       if (entered == 2u) {
         if (stack_size == kStackSize) {
           tracer_stack_overflow = 1u;
@@ -206,12 +204,27 @@ bool trace_ray(vec3 origin, vec3 direction, float t_min, float ray_t_max, out Hi
       precise vec3 local_origin = (m[0].xyz * origin.x + m[1].xyz * origin.y) + (m[2].xyz * origin.z + m[3].xyz);
       // w = 0: c3 w is a zero added to c2 z, which leaves it unchanged.
       precise vec3 local_direction = (m[0].xyz * direction.x + m[1].xyz * direction.y) + m[2].xyz * direction.z;
-      if (!walk_blas(instance, local_origin, local_direction, t_min, t_max, hit)) continue;
-      if (kAnyHit) return true;
+      if (!walk_blas(instance, local_origin, local_direction, t_min, t_max, any_hit, hit)) continue;
+      if (any_hit) return true;
       hit.instance = index;
       found = true;
     }
     POP_OR_RETURN(tlas_stack_node)
   }
   return found;
+}
+
+// The closest hit of the ray within [t_min, t_max], in RayTracer's convention (Hit{t = inf, instance =
+// prim = kInvalidIndex} for a miss).
+Hit trace_closest(vec3 origin, vec3 direction, float t_min, float t_max) {
+  Hit hit;
+  trace_ray(origin, direction, t_min, t_max, false, hit);
+  return hit;
+}
+
+// The occlusion query: whether anything lies within [t_min, t_max] (the walk returns at the first
+// hit, the nearer child not sought).
+bool trace_occluded(vec3 origin, vec3 direction, float t_min, float t_max) {
+  Hit unused;
+  return trace_ray(origin, direction, t_min, t_max, true, unused);
 }

@@ -204,6 +204,20 @@ void GlRayTracer::trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::
   check_gl("rt gl: trace_any_gl");
 }
 
+void GlRayTracer::bind_inline_tracing(std::uint32_t program) {
+  require_built("bind_inline_tracing()");
+  // Looked up per call (a name lookup a pass a frame): the caller's program is not the tracer's to
+  // remember, and the count changes with every update's TLAS.
+  const GLint location = glGetUniformLocation(program, "tlas_node_count");
+  if (location < 0)
+    fail("rt gl: program {} traces inline but has no tlas_node_count uniform (include gl_rt_traverse.glsl)", program);
+  glProgramUniform1ui(program, location, structures_.tlas_node_count());
+  structures_.bind();
+  // Inline walks set the same flag as the tracer's kernels: check_stack_overflow() covers them too.
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlagBinding, flag_.id());
+  check_gl("rt gl: bind_inline_tracing");
+}
+
 void GlRayTracer::check_stack_overflow() const {
   std::uint32_t flag = 0;
   glGetNamedBufferSubData(flag_.id(), 0, sizeof(flag), &flag);

@@ -62,6 +62,7 @@ public:
                         std::uint32_t capacity) override;
   void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
                     std::uint32_t capacity) override;
+  void bind_inline_tracing(std::uint32_t program) override;
   // rt::GlTracing: the vertex range of `mesh`; update_gl enqueues the GPU refit (GlRefit) of the
   // dirty meshes' BLASes and the TLAS (a duplicate in the list is refitted once). stats() counts these
   // refits; last_update_ms is then the host's enqueueing, and blas_sah_drift is absent while a mesh's

@@ -86,7 +86,8 @@ FramePipeline::FramePipeline(const Scene& scene, int width, int height, const Fr
                         /*shadow_rays=*/settings_.shadows.method != ShadowMethod::cube);
   if (settings_.shadows.method != ShadowMethod::cube)
     shadow_rays_.emplace(scene, width, height, settings_.shadows.method, *tracer_,
-                         settings_.ray_tracing.origin_offset_fraction, settings_.shadows.hybrid_depth_edge_fraction);
+                         settings_.ray_tracing.origin_offset_fraction, settings_.shadows.hybrid_depth_edge_fraction,
+                         settings_.ray_tracing.gl_inline_shadow_rays);
   if (settings_.reflections == ReflectionMode::adaptive) {
     const bool device = tracer_->device_tracing() != nullptr || tracer_->gl_tracing() != nullptr;
     adaptive_.emplace(width, height, settings_.adaptive, device, length(scene.world_bounds().extent()));
@@ -129,8 +130,15 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   if (shadow_rays_) {
     // rt shadows need no cube map: reflection hits cast shadow rays too.
     shadow.cube = settings_.shadows.method == ShadowMethod::hybrid;
-    shadow.after_cube = [&] { shadow_rays_->write_rays(raster_); };
+    // Traced inline (gl backend): the whole mask, in one dispatch; otherwise the rays, traced below.
+    shadow.after_cube = [&] {
+      if (shadow_rays_->traces_inline())
+        shadow_rays_->run(raster_);
+      else
+        shadow_rays_->write_rays(raster_);
+    };
   }
+  const bool shadow_steps_left = shadow_rays_ && !shadow_rays_->traces_inline();
   raster_.render_surfaces(frame, timer, shadow);
   write_reflection_sampling(raster_.frame_constants_buffer(), settings_.sampling, 0);
   const ReflectionPath path = choose_reflection_path(frame, slot, timer);
@@ -145,7 +153,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
   // (about 0.3 ms each on an H100, docs/perf.md "Seventh round"): what needs only the G-buffer, up
   // to the traces, runs before lighting (docs/render.md "One hand-over a frame"). Otherwise the
   // frame keeps the paper's order, where SSR marches and fetches its colours in one dispatch.
-  const bool one_hand_over = shadow_rays_ && traces && tracer_->device_tracing() != nullptr;
+  const bool one_hand_over = shadow_steps_left && traces && tracer_->device_tracing() != nullptr;
   const auto list_rays = [&] { ray_traced_->list(raster_, trace_all ? 0 : ssr_->failure_mask(), timer); };
   std::uint32_t listed = 0;
   if (one_hand_over) {
@@ -157,7 +165,7 @@ void FramePipeline::render(const FrameState& frame, GpuTimer* timer) {
     raster_.light(timer);
     if (marches) run_timed_pass(timer, "ssr", [&] { ssr_->shade(ssr_inputs); });
   } else {
-    if (shadow_rays_)
+    if (shadow_steps_left)
       run_timed_pass(timer, "shadow", [&] {
         shadow_rays_->trace();
         shadow_rays_->write_mask(raster_);

@@ -69,6 +69,9 @@ public:
   std::span<const std::uint8_t> occluded() const;
   std::span<const accel::Hit> hits() const;  // RayQuery::closest
   std::size_t capacity() const { return capacity_; }
+  // The answers' GL buffer (GPU backends and gl: a uint per ray), for tests that read a GPU-side
+  // trace's answers back.
+  GLuint answer_buffer() const { return occluded_.id(); }
 
 private:
   std::size_t capacity_;

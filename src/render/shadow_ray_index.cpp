@@ -16,4 +16,6 @@ std::size_t shadow_ray_index(int x, int y, int width, int height) {
   return static_cast<std::size_t>(shader::shadow_ray_index(shader::ivec2(x, y), shader::ivec2(width, height)));
 }
 
+ShadowRayBlock shadow_ray_block() { return {shader::kShadowRayBlock.x, shader::kShadowRayBlock.y}; }
+
 }  // namespace glint::render

@@ -8,4 +8,11 @@ namespace glint::render {
 
 std::size_t shadow_ray_index(int x, int y, int width, int height);
 
+// The block of pixels whose rays go one after the other (the GLSL's kShadowRayBlock, 8 x 4: one warp),
+// also the work group of the gl backend's inline shadow pass (shadow_rays_inline.comp.glsl).
+struct ShadowRayBlock {
+  int width, height;
+};
+ShadowRayBlock shadow_ray_block();
+
 }  // namespace glint::render

@@ -137,6 +137,14 @@ public:
   // occluded[i] = 1 when rays[i] hits anything within [t_min, t_max], else 0: one uint per ray.
   virtual void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
                             std::uint32_t capacity) = 0;
+  // Inline tracing: a render pass's compute shader that includes shaders/include/gl_rt_traverse.glsl
+  // walks the structures itself, with rays it makes and answers it uses in the same invocation (no
+  // ray list between passes: RayTracedShadows, GlReflectionTrace). This binds the structures (storage
+  // bindings 21..24, texture unit 20: above the renderer's) and the stack-overflow flag (28, read by
+  // the backend's overflow check) and sets `program`'s tlas_node_count uniform; the caller binds its
+  // own buffers, dispatches `program` next (before an update() of the tracer) and places its barriers.
+  // glint::Error before the structures are built, or when `program` has no tlas_node_count uniform.
+  virtual void bind_inline_tracing(std::uint32_t program) = 0;
 
   // Where mesh `mesh`'s object-space positions live in the tracer's GL vertex buffer: vertex_count
   // vec4s (w unused) from offset_bytes of buffer `buffer`. A GL-side deformer writes them there (e.g.
