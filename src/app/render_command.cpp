@@ -39,6 +39,12 @@
 namespace glint {
 namespace {
 
+// Whether --backend names the gl backend (its structures in the renderer's GL context).
+bool is_gl_backend(const RenderOptions& options) {
+  const backends::Backend* backend = backends::backend_if_known(options.backend);
+  return backend != nullptr && backend->device == backends::Device::gl;
+}
+
 std::string builder_names() {
   std::string names;
   for (const std::string& name : rt::blas_structure_names()) {
@@ -105,11 +111,18 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
       fail("--accel kdtree applies to the cpu and cuda backends; the gl backend traces BVHs only");
   }
   settings.ray_tracing.update = rt::parse_update_policy(options.update);
-  if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options) &&
-      !backends::is_gpu_backend(options.backend))
-    fail("--deform-on gpu needs --backend {} when rays are traced (reflections hybrid or rt, shadows rt or "
-         "hybrid, or primary rt; the {} backend builds from host vertices); use --deform-on cpu",
-         backends::gpu_backends_text(), options.backend);
+  if (render::uses_ray_tracer(settings) && options.deform == "on" && deforms_on_gpu(options)) {
+    if (!backends::is_gpu_backend(options.backend) && !is_gl_backend(options))
+      fail("--deform-on gpu needs --backend gl, {} when rays are traced (reflections hybrid or rt, shadows rt or "
+           "hybrid, or primary rt; the {} backend builds from host vertices); use --deform-on cpu",
+           backends::gpu_backends_text(), options.backend);
+    // The gl backend follows GPU-posed meshes by refitting in GL compute; rebuilding (rebuild, or auto
+    // past its SAH ratio) builds on the host, from host vertices the GPU deformer never wrote.
+    if (is_gl_backend(options) && settings.ray_tracing.update != rt::UpdatePolicy::refit)
+      fail("--deform-on gpu with --backend gl refits on the GPU, but --update {} rebuilds on the host; use --update "
+           "refit or --deform-on cpu",
+           options.update);
+  }
   settings.validate();
   return settings;
 }
@@ -193,7 +206,10 @@ vec3 parse_point_flag(std::string_view flag, std::string_view text) {
 }
 
 bool deforms_on_gpu(const RenderOptions& options) {
-  return options.deform_on.empty() ? backends::is_gpu_backend(options.backend) : options.deform_on == "gpu";
+  if (!options.deform_on.empty()) return options.deform_on == "gpu";
+  // gl follows GPU-posed meshes by refitting only, so it deforms on the GPU by default where it refits
+  // (--update refit); under the default --update auto the host keeps deforming and may rebuild.
+  return backends::is_gpu_backend(options.backend) || (is_gl_backend(options) && options.update == "refit");
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -284,9 +300,11 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
   command->add_option("--deform-on", options.deform_on,
-                      "Where the deformable meshes are posed: gpu (CUDA kernels writing the GL vertices and the "
-                      "cuda or optix backend's structures in place) or cpu; default: gpu with --backend cuda or optix, "
-                      "else cpu")
+                      "Where the deformable meshes are posed: gpu (GL compute writing the GL vertices; CUDA kernels "
+                      "the cuda or optix backend's positions, whose structures follow on the GPU; the gl backend's "
+                      "positions copied from GL's and its structures refitted in GL compute, so it needs --update "
+                      "refit) or cpu; default: gpu with --backend cuda or optix, and with --backend gl --update "
+                      "refit; else cpu")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   command->add_option("--hold-frame", options.hold_frame,
                       "Hold the scene still at walkthrough frame N: every frame rendered has frame N's camera, "

@@ -116,9 +116,13 @@ double FramePipeline::update_ray_tracer(std::span<const std::uint32_t> dirty_mes
 double FramePipeline::update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes) {
   if (!tracer_ || dirty_meshes.empty()) return 0.0;
   rt::DeviceTracing* device = tracer_->device_tracing();
-  if (device == nullptr) fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
+  rt::GlTracing* gl = tracer_->gl_tracing();
+  if (device == nullptr && gl == nullptr)
+    fail("ray tracing: the {} backend cannot follow meshes deformed on the GPU", tracer_->name());
   const Stopwatch watch;
-  device->update_device(dirty_meshes, settings_.ray_tracing.update);
+  // cuda and optix on their CUDA stream, gl in GL compute: either way only enqueued.
+  if (device != nullptr) device->update_device(dirty_meshes, settings_.ray_tracing.update);
+  else gl->update_gl(dirty_meshes, settings_.ray_tracing.update);
   return watch.elapsed_ms();
 }
 

@@ -103,7 +103,8 @@ public:
   // ... and brings the ray tracer's structures up to date by the settings' UpdatePolicy. Returns its
   // wall time in milliseconds (0 without ray tracing).
   double update_ray_tracer(std::span<const std::uint32_t> dirty_meshes);
-  // The same after a GPU deformer (render/gpu_deformation.h) moved the meshes on the GPU.
+  // The same after a GPU deformer (render/gpu_deformation.h) moved the meshes on the GPU: the tracer's
+  // DeviceTracing::update_device (cuda, optix) or GlTracing::update_gl (gl), enqueued.
   double update_ray_tracer_on_device(std::span<const std::uint32_t> dirty_meshes);
 
   // In hybrid and rt modes with a CPU backend, the CPU waits for the ray list in the middle of the
@@ -146,6 +147,7 @@ public:
   const rt::RayTracer* ray_tracer() const { return tracer_.get(); }
   // A GPU ray tracer's device side (for a GPU deformer); null with a CPU backend or no ray tracing.
   rt::DeviceTracing* device_tracing() { return tracer_ ? tracer_->device_tracing() : nullptr; }
+  rt::GlTracing* gl_tracing() { return tracer_ ? tracer_->gl_tracing() : nullptr; }
   // The shadow rays (rt and hybrid shadows), for tests; null with cube shadows.
   const RayTracedShadows* shadow_rays() const { return shadow_rays_ ? &*shadow_rays_ : nullptr; }
   // The ray-traced reflections (hybrid and rt reflections), for tests; null otherwise.

@@ -28,6 +28,9 @@ public:
 
   // The scene meshes it poses, ascending (SceneDeformers::meshes).
   const std::vector<std::uint32_t>& meshes() const { return deformers_.meshes(); }
+  // The object-space positions apply() posed for meshes()[k]: a buffer of vertex_count vec4s (w 0),
+  // written by a shader (a copy from it needs GL_BUFFER_UPDATE_BARRIER_BIT first).
+  GLuint posed_positions(std::size_t k) const { return meshes_.at(k).posed.id(); }
 
 private:
   struct MeshBuffers {

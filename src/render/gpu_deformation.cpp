@@ -2,16 +2,18 @@
 
 #include "core/error.h"
 
+#include <epoxy/gl.h>
+
 namespace glint::render {
 namespace {
 
 // The CUDA half poses only the tracer's device positions (no GL vertex buffer: GL poses its own).
 std::unique_ptr<cuda::GpuSceneDeformer> tracer_deformer(const SceneDeformers& deformers, FramePipeline& pipeline) {
   const rt::RayTracer* tracer = pipeline.ray_tracer();
-  if (tracer == nullptr) return nullptr;
+  if (tracer == nullptr || pipeline.gl_tracing() != nullptr) return nullptr;
   if (pipeline.device_tracing() == nullptr)
-    fail("--deform-on gpu needs a GPU ray tracer (--backend cuda): the {} backend builds from host vertices, which "
-         "the GPU deformer does not update; use --deform-on cpu",
+    fail("--deform-on gpu needs a GPU ray tracer (--backend cuda, optix or gl): the {} backend builds from host "
+         "vertices, which the GPU deformer does not update; use --deform-on cpu",
          tracer->name());
   return std::make_unique<cuda::GpuSceneDeformer>(deformers, *pipeline.device_tracing());
 }
@@ -19,14 +21,38 @@ std::unique_ptr<cuda::GpuSceneDeformer> tracer_deformer(const SceneDeformers& de
 }  // namespace
 
 GpuDeformation::GpuDeformation(const SceneDeformers& deformers, FramePipeline& pipeline)
-    : gl_(deformers, pipeline.raster().gpu_scene()), cuda_(tracer_deformer(deformers, pipeline)) {}
+    : gl_(deformers, pipeline.raster().gpu_scene()),
+      cuda_(tracer_deformer(deformers, pipeline)),
+      gl_tracer_(pipeline.gl_tracing()) {
+  if (gl_tracer_ == nullptr) return;
+  for (std::size_t k = 0; k < gl_.meshes().size(); ++k) {
+    const rt::GlTracing::VertexRange range = gl_tracer_->gl_positions(gl_.meshes()[k]);
+    if (range.vertex_count != deformers.deformers()[k].vertex_count())
+      fail("GPU deformation: mesh '{}' has {} vertices in the gl backend's structures but {} in its deformer",
+           deformers.deformers()[k].mesh_name(), range.vertex_count, deformers.deformers()[k].vertex_count());
+  }
+}
 
 GpuDeformation::~GpuDeformation() = default;
 
 std::vector<std::uint32_t> GpuDeformation::apply(int frame) {
   gl_.apply(frame);
   if (cuda_) return cuda_->apply(frame);
+  if (gl_tracer_) copy_poses_to_tracer();
   return gl_.meshes();
+}
+
+void GpuDeformation::copy_poses_to_tracer() {
+  // The deformer's shader wrote the poses; a copy reads them after this barrier.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  for (std::size_t k = 0; k < gl_.meshes().size(); ++k) {
+    // Asked every frame: a host update may have laid the tracer's buffers out anew. Both sides hold
+    // vec4 positions, so the copy is one range.
+    const rt::GlTracing::VertexRange range = gl_tracer_->gl_positions(gl_.meshes()[k]);
+    if (range.vertex_count == 0) continue;
+    glCopyNamedBufferSubData(gl_.posed_positions(k), range.buffer, 0, static_cast<GLintptr>(range.offset_bytes),
+                             static_cast<GLsizeiptr>(std::uint64_t{range.vertex_count} * sizeof(vec4)));
+  }
 }
 
 std::optional<std::uint64_t> GpuDeformation::last_cuda_apply() const {

@@ -24,7 +24,10 @@ void check_runnable(const RenderOptions& options) {
   if (render::uses_ray_tracer(settings)) {
     backends::check_backend_runnable(options.backend);
   }
-  if (options.deform == "on" && deforms_on_gpu(options)) require_cuda_gpu("deformation on the GPU");
+  // CUDA poses only a cuda or optix tracer's positions; GL poses its vertex buffer and the gl backend's.
+  if (options.deform == "on" && deforms_on_gpu(options) && render::uses_ray_tracer(settings) &&
+      backends::is_gpu_backend(options.backend))
+    require_cuda_gpu("deformation on the GPU");
 }
 
 }  // namespace

@@ -158,7 +158,7 @@ TEST_F(RenderCli, BadInputIsOneLineAndWritesNothing) {
     EXPECT_FALSE(fs::exists(out)) << conflict;
   }
   const CliResult gpu_deform = run_glint("render atrium-simple --deform-on gpu --backend cpu --out " + quoted(out));
-  EXPECT_NE(gpu_deform.err.find("--backend cuda"), std::string::npos) << gpu_deform.err;
+  EXPECT_NE(gpu_deform.err.find("--backend gl, cuda"), std::string::npos) << gpu_deform.err;
   const CliResult missing = run_glint("render /nonexistent/scene.obj --out " + quoted(out));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/scene.obj"), std::string::npos);
@@ -222,7 +222,8 @@ TEST_F(RenderCli, GpuDeformationWithACpuTracerIsOneClearLine) {
                                 "--deform-on gpu --out " + quoted(out));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(line_count(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("--deform-on gpu needs --backend cuda or optix when rays are traced"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--deform-on gpu needs --backend gl, cuda or optix when rays are traced"), std::string::npos)
+      << r.err;
   EXPECT_FALSE(fs::exists(out));
 }
 
