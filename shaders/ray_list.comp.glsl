@@ -53,9 +53,11 @@ void main() {
     if (listed) slot = atomicAdd(group_rays, 1u);
   }
   barrier();
+  // Only groups with something to add touch the two global counters: every group's atomics go to the
+  // same two words, so the groups without reflective pixels should not queue behind the others.
   if (gl_LocalInvocationIndex == 0u) {
-    group_base = atomicAdd(ray_count, group_rays);
-    atomicAdd(reflective_count, group_reflective);
+    group_base = group_rays != 0u ? atomicAdd(ray_count, group_rays) : 0u;
+    if (group_reflective != 0u) atomicAdd(reflective_count, group_reflective);
   }
   barrier();
   if (!listed || group_base + slot >= uint(max_rays)) return;
