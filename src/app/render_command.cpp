@@ -244,7 +244,8 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--update", options.update,
                       "How deforming meshes' structures follow them each frame: rebuild, refit, or auto (refit, "
-                      "rebuild once the SAH cost drifted 30 % above the last build's)")
+                      "rebuild once the SAH cost drifted 30 % above the last build's); --backend gl deforming on "
+                      "the GPU refits only")
       ->check(CLI::IsMember(rt::kUpdatePolicyNames.names()))
       ->capture_default_str();
   command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
