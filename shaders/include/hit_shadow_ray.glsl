@@ -32,6 +32,9 @@ Ray hit_shadow_ray(Ray reflection_ray, Hit hit) {
   if (dot(n, -reflection_ray.direction) < 0.0) n = -n;  // the side the reflecting surface sees
   const vec3 to_light = light_position_range.xyz - surface.position;
   if (dot(n, to_light) <= 0.0) return empty_hit_shadow_ray();
-  const vec3 origin = surface.position + origin_offset * n;
-  return Ray(origin, 0.0, light_position_range.xyz - origin, kHitShadowRayEnd);
+  // `precise`, as in pixel_shadow_ray.glsl: the walk that traces the ray inline is precise, so the
+  // ray is made by the stated operations in both passes, not contracted in one of them only.
+  precise vec3 origin = surface.position + origin_offset * n;
+  precise vec3 direction = light_position_range.xyz - origin;
+  return Ray(origin, 0.0, direction, kHitShadowRayEnd);
 }

@@ -54,6 +54,11 @@ Ray pixel_shadow_ray(ivec2 pixel, ivec2 size) {
     if (!cube_value_uncertain(pixel, size, value, distance(position.xyz, camera_position.xyz)))
       return empty_pixel_shadow_ray(kShadowRayKeep);
   }
-  const vec3 origin = position.xyz + origin_offset * n;
-  return Ray(origin, 0.0, light_position_range.xyz - origin, kShadowRayEnd);
+  // `precise` (no fused multiply-add, no reordering, back through every operation the ray depends on):
+  // a pass that traces the ray inline feeds it to the walk's precise box and triangle tests, which
+  // would forbid contracting its arithmetic there while shadow_rays.comp.glsl may contract it; so
+  // both make the ray by the stated operations and trace the same ray.
+  precise vec3 origin = position.xyz + origin_offset * n;
+  precise vec3 direction = light_position_range.xyz - origin;
+  return Ray(origin, 0.0, direction, kShadowRayEnd);
 }
