@@ -16,7 +16,8 @@ constexpr GLuint kWorkGroupSize = 64;  // local_size_x in hit_shadow_rays.comp.g
 }  // namespace
 
 HitShadowRays::HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset, bool gl_inline)
-    : buffers_(capacity, tracer, "reflection shadow rays"),
+    : buffers_(capacity, tracer, "reflection shadow rays", RayQuery::any,
+               gl_inline && tracer.gl_tracing() != nullptr ? RayStorage::answers_only : RayStorage::rays_and_answers),
       origin_offset_(origin_offset),
       traced_with_hits_((tracer.device_tracing() != nullptr && tracer.device_tracing()->traces_hit_shadows()) ||
                         (gl_inline && tracer.gl_tracing() != nullptr)),

@@ -8,7 +8,8 @@
 //    mapped around each trace_any_device (one uint per ray; the count, `capacity`, sits in a GL
 //    buffer too), so the host never waits;
 //  - the gl backend: both in GPU memory, traced by its compute shaders (rt::GlTracing) like any
-//    other GL pass: no mapping, no hand-over.
+//    other GL pass: no mapping, no hand-over; or the answers alone (RayStorage::answers_only), where
+//    a pass traces its rays inline and writes the answers itself.
 //   rays     (kShadowRayBinding):       accel::Ray[capacity]; an empty ray (t_min > t_max) is never occluded
 //   answers  (kShadowOcclusionBinding): uint[], read in GLSL by occlusion_flag.glsl's
 //            `occluded(i)` with the flag_bytes() uniform (4: a uint per ray, 1: four bytes to a uint)
@@ -38,10 +39,17 @@ inline constexpr GLuint kShadowOcclusionBinding = 11;
 // Which query trace() asks: any hit (occlusion flags) or the closest hit (accel::Hit per ray).
 enum class RayQuery { any, closest };
 
+// What the buffers hold: the rays and their answers, or (gl backend only) the answers alone, which a
+// pass that makes and traces its rays inline writes itself (GlReflectionTrace: the hits' shadow
+// rays), so no ray list of capacity x 32 bytes is kept that nothing writes.
+enum class RayStorage { rays_and_answers, answers_only };
+
 class OcclusionBuffers {
 public:
-  // `tracer` must outlive this. glint::Error for capacity 0. Needs a current GL context.
-  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query = RayQuery::any);
+  // `tracer` must outlive this. glint::Error for capacity 0, or answers_only with another backend than
+  // gl. Needs a current GL context.
+  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query = RayQuery::any,
+                   RayStorage storage = RayStorage::rays_and_answers);
   OcclusionBuffers(const OcclusionBuffers&) = delete;  // owns mapped pointers
   OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
 

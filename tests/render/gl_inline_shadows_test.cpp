@@ -3,7 +3,8 @@
 // equals the three steps' (ray list, trace_any_gl, mask pass) pixel for pixel, rt and hybrid, on
 // atrium-simple and on an atrium frame; the reflection trace that traces its hits' shadow rays in
 // the same invocation writes the same hits and answers as the closest-hit trace, the hit shadow
-// ray pass and the occlusion query, and the frames are equal; the gl masks equal the cpu backend's.
+// ray pass and the occlusion query, and the frames are equal; the gl masks equal the cpu backend's; the
+// hits' answers are kept without a ray list.
 #include "gl_rt/gl_ray_tracer.h"
 #include "render/frame_pipeline.h"
 #include "render/shadow_ray_index.h"
@@ -184,6 +185,28 @@ TEST_F(GlInlineShadowsTest, BindingAProgramWithoutTheWalkIsOneLine) {
     ADD_FAILURE() << "a program without the walk was bound";
   } catch (const Error& error) {
     EXPECT_NE(std::string(error.what()).find("no tlas_node_count uniform"), std::string::npos) << error.what();
+  }
+}
+
+// The hits' shadow answers of the inline trace are kept without a ray list; only the gl backend traces
+// that way, and such buffers cannot be traced by anyone else.
+TEST_F(GlInlineShadowsTest, AnswersWithoutRaysAreTheGlBackendsOnly) {
+  const Scene scene = make_preset("atrium-simple");
+  const std::unique_ptr<rt::RayTracer> cpu = build_ray_tracer(scene, {});
+  try {
+    OcclusionBuffers buffers(16, *cpu, "test rays", RayQuery::any, RayStorage::answers_only);
+    ADD_FAILURE() << "the cpu backend got answers without rays";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("not the cpu backend"), std::string::npos) << error.what();
+  }
+  gl_rt::GlRayTracer gl;
+  gl.build(scene, {});
+  OcclusionBuffers answers(16, gl, "test rays", RayQuery::any, RayStorage::answers_only);
+  try {
+    answers.trace(16);
+    ADD_FAILURE() << "traced answers without rays";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("no rays to trace"), std::string::npos) << error.what();
   }
 }
 
