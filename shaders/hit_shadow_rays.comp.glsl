@@ -3,8 +3,8 @@
 // one per listed reflection ray i by include/hit_shadow_ray.glsl's rule, written to shadow ray i, so
 // hit shading reads ray i's answer; the tracer's occlusion query answers them. Slots past the list's
 // count (a GPU backend's dispatch covers the capacity) get an empty ray, which is never occluded.
-// The gl backend traces these rays with the hits instead (trace_hits_and_shadows.comp.glsl) unless
-// asked for the three steps.
+// The gl backend makes and traces these rays in one pass instead (hit_shadows_inline.comp.glsl)
+// unless asked for the three steps.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"

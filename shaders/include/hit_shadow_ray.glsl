@@ -1,7 +1,7 @@
 // The shadow ray of a reflection hit (docs/hybrid.md "Shadows of reflection hits"), the one GLSL rule
 // of both ways it is traced: hit_shadow_rays.comp.glsl writes it into a ray list for the tracer's
 // occlusion query (cpu, embree, optix, and the gl backend's three-step path),
-// trace_hits_and_shadows.comp.glsl traces it right after the hit (gl backend). The rule is
+// hit_shadows_inline.comp.glsl makes and traces it in one pass after the closest hits (gl backend). The rule is
 // rt/hit_shadow_ray.h's, which the cuda backend applies in CUDA (keep the two the same): n is the hit
 // triangle's geometric normal (world space) turned towards the reflection ray's origin (the side the
 // reflecting surface sees), and

@@ -22,7 +22,7 @@ constexpr GLuint kRaysPerGroup = 32;
 GlReflectionTrace::GlReflectionTrace(rt::GlTracing& gl, RayHitBuffers& buffers, HitShadowRays* hit_shadows)
     : gl_(gl), buffers_(buffers), hit_shadows_(hit_shadows) {
   if (hit_shadows_ == nullptr || !hit_shadows_->traced_with_hits()) return;
-  with_shadows_.emplace(ShaderProgram::from_embedded({"trace_hits_and_shadows.comp.glsl"}));
+  with_shadows_.emplace(ShaderProgram::from_embedded({"hit_shadows_inline.comp.glsl"}));
   with_shadows_->set_uniform("origin_offset", hit_shadows_->origin_offset());
   ray_base_ = with_shadows_->uniform_location("ray_base");
   ray_capacity_ = with_shadows_->uniform_location("ray_capacity");
@@ -34,16 +34,14 @@ std::uint32_t GlReflectionTrace::trace(std::size_t, const HitShadowFrame& frame,
   if (with_the_rays) with_the_rays();  // GL passes all: no hand-over to share
   const auto capacity = static_cast<std::uint32_t>(buffers_.capacity());
   run_timed_pass(timer, "trace", [&] {
-    if (with_shadows_)
-      trace_hits_and_shadows(frame, capacity);
-    else
-      gl_.trace_closest_gl(buffers_.ray_buffer(), buffers_.hit_buffer(), buffers_.counter_buffer(), capacity);
+    gl_.trace_closest_gl(buffers_.ray_buffer(), buffers_.hit_buffer(), buffers_.counter_buffer(), capacity);
+    if (with_shadows_) trace_hit_shadows(frame, capacity);
   });
   return capacity;
 }
 
-void GlReflectionTrace::trace_hits_and_shadows(const HitShadowFrame& frame, std::uint32_t capacity) {
-  GlPassScope scope("hits_and_shadows");
+void GlReflectionTrace::trace_hit_shadows(const HitShadowFrame& frame, std::uint32_t capacity) {
+  GlPassScope scope("hit_shadows");
   // The shadow rule rebuilds each hit point from the GpuScene and reads the light from the frame
   // constants, as hit_shadow_rays.comp.glsl does.
   frame.scene->bind_resources();
@@ -60,9 +58,9 @@ void GlReflectionTrace::trace_hits_and_shadows(const HitShadowFrame& frame, std:
     glProgramUniform1ui(with_shadows_->id(), ray_base_, static_cast<GLuint>(base));
     glDispatchCompute(work_groups(std::min<std::uint64_t>(rays_per_dispatch, capacity - base), kRaysPerGroup), 1, 1);
   }
-  // Hit shading reads the hits and the answers; the counts are copied for the statistics.
+  // Hit shading reads the answers.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  check_gl("gl reflection trace: hits and shadows");
+  check_gl("gl reflection trace: the hits' shadow rays");
 }
 
 std::optional<RayTraceFrameStats> GlReflectionTrace::stats(std::size_t slot, bool wait) {

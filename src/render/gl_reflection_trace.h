@@ -3,10 +3,12 @@
 // count from the GL buffers and write the hits there, a GL pass timed as "trace" by the frame's
 // timer (FrameLoop makes that pass's time the frame's trace_ms). No host wait, no CUDA.
 // With shadow rays traced with the hits (HitShadowRays::traced_with_hits: rt and hybrid shadows,
-// RayTracingSettings::gl_inline_shadow_rays), one render pass does the closest-hit trace and the hits'
-// shadow rays (shaders/trace_hits_and_shadows.comp.glsl, walking the tracer's structures inline):
-// its answers go where hit shading reads them, and HitShadowRays' own pass and trace are skipped.
-// trace_ms then holds the shadow rays too, as with the cuda backend.
+// RayTracingSettings::gl_inline_shadow_rays), the closest-hit kernel is followed by one render pass
+// that makes and traces the hits' shadow rays (shaders/hit_shadows_inline.comp.glsl, walking the
+// tracer's structures inline): its answers go where hit shading reads them, and HitShadowRays' own
+// pass and trace are skipped. trace_ms then holds the shadow rays too, as with the cuda backend.
+// Two dispatches, not one: the closest-hit and occlusion walks in one kernel took twice as long on an
+// H100 (docs/perf.md "Eleventh round").
 #include "gl/shader_program.h"
 #include "render/reflection_trace_step.h"
 
@@ -25,12 +27,12 @@ public:
   std::optional<RayTraceFrameStats> stats(std::size_t slot, bool wait) override;
 
 private:
-  void trace_hits_and_shadows(const HitShadowFrame& frame, std::uint32_t capacity);
+  void trace_hit_shadows(const HitShadowFrame& frame, std::uint32_t capacity);
 
   rt::GlTracing& gl_;
   RayHitBuffers& buffers_;
   HitShadowRays* hit_shadows_;  // null without shadow rays
-  std::optional<ShaderProgram> with_shadows_;  // trace_hits_and_shadows.comp.glsl, where traced with the hits
+  std::optional<ShaderProgram> with_shadows_;  // hit_shadows_inline.comp.glsl, where traced with the hits
   GLint ray_base_ = -1, ray_capacity_ = -1;      // its uniforms (uint)
 };
 

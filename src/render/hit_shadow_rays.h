@@ -8,9 +8,9 @@
 // traces_hit_shadows: cuda) writes and answers them in the closest-hit trace's CUDA work instead
 // (RayTracedReflections maps answers() for it), by the same rule (rt/hit_shadow_ray.h), which saves
 // a GL pass and a GL-CUDA hand-over between the two traces; run() then does nothing. So does the gl
-// backend, whose closest-hit trace traces each hit's shadow ray in the same invocation
-// (GlReflectionTrace, shaders/trace_hits_and_shadows.comp.glsl, the rule shared with this pass's
-// shader in shaders/include/hit_shadow_ray.glsl), unless gl_inline is off.
+// backend, whose reflection trace makes and traces each hit's shadow ray in one pass after the
+// closest hits (GlReflectionTrace, shaders/hit_shadows_inline.comp.glsl, the rule shared with this
+// pass's shader in shaders/include/hit_shadow_ray.glsl), unless gl_inline is off.
 //   inputs:  RayHitBuffers (rays, hits, counters), GpuScene, FrameConstants UBO (light)
 //   outputs: OcclusionBuffers rays and answers, slot i for reflection ray i
 #include "gl/shader_program.h"
