@@ -1,6 +1,5 @@
 // accel::Ray (32 bytes) and accel::Hit (20 bytes) as std430 structs: the records the gl backend's walk
-// reads and writes, and the shadow-ray rules (pixel_shadow_ray.glsl, hit_shadow_ray.glsl) make. One
-// definition, so a shader that both makes a ray and walks it (a pass that traces inline) declares
+// reads and writes, and the dense shadow-ray rule (pixel_shadow_ray.glsl) makes. One definition, so a shader that both makes a ray and walks it (a pass that traces inline) declares
 // each struct once.
 struct Ray {
   vec3 origin;

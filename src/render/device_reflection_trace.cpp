@@ -20,7 +20,7 @@ DeviceReflectionTrace::DeviceReflectionTrace(rt::DeviceTracing& device, RayHitBu
                                              HitShadowRays* hit_shadows)
     : device_(device), buffers_(buffers), hit_shadows_(hit_shadows), interop_(map_ray_buffers(buffers)) {}
 
-std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, const HitShadowFrame& frame, GpuTimer* timer,
+std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
                                            const std::function<void()>& with_the_rays) {
   // A GPU pass from GL's side, so that the frame's GPU passes hold the CUDA segment too: GL's
   // commands after the unmap wait for the trace, so the pass spans the mapping, the traces and
@@ -42,7 +42,7 @@ std::uint32_t DeviceReflectionTrace::trace(std::size_t slot, const HitShadowFram
   times.hit_shadows.drop(device_);
   if (hit_shadows_ && hit_shadows_->traced_with_hits()) {
     cuda::ScopedInteropMap shadow = hit_shadows_->answers().map_for_cuda();
-    const rt::HitShadowRays request{frame.light_position, hit_shadows_->origin_offset(), shadow.pointer<accel::Ray>(0),
+    const rt::HitShadowRays request{light_position, hit_shadows_->origin_offset(), shadow.pointer<accel::Ray>(0),
                                     shadow.pointer<std::uint32_t>(1)};
     const rt::HitAndShadowTickets tickets =
         device_.trace_closest_and_hit_shadows_device(rays, hits, count, capacity, request);

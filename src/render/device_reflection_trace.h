@@ -16,7 +16,7 @@ class DeviceReflectionTrace final : public ReflectionTraceStep {
 public:
   DeviceReflectionTrace(rt::DeviceTracing& device, RayHitBuffers& buffers, HitShadowRays* hit_shadows);
 
-  std::uint32_t trace(std::size_t slot, const HitShadowFrame& frame, GpuTimer* timer,
+  std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
                       const std::function<void()>& with_the_rays) override;
   void finish(std::size_t slot) override { buffers_.request_counts(slot); }
   std::optional<RayTraceFrameStats> stats(std::size_t slot, bool wait) override;

@@ -15,12 +15,10 @@ constexpr GLuint kWorkGroupSize = 64;  // local_size_x in hit_shadow_rays.comp.g
 
 }  // namespace
 
-HitShadowRays::HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset, bool gl_inline)
-    : buffers_(capacity, tracer, "reflection shadow rays", RayQuery::any,
-               gl_inline && tracer.gl_tracing() != nullptr ? RayStorage::answers_only : RayStorage::rays_and_answers),
+HitShadowRays::HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset)
+    : buffers_(capacity, tracer, "reflection shadow rays"),
       origin_offset_(origin_offset),
-      traced_with_hits_((tracer.device_tracing() != nullptr && tracer.device_tracing()->traces_hit_shadows()) ||
-                        (gl_inline && tracer.gl_tracing() != nullptr)),
+      traced_with_hits_(tracer.device_tracing() != nullptr && tracer.device_tracing()->traces_hit_shadows()),
       program_(ShaderProgram::from_embedded({"hit_shadow_rays.comp.glsl"})) {
   if (!(origin_offset >= 0.0f) || !std::isfinite(origin_offset))
     fail("reflection shadow rays: origin offset {} must be finite and >= 0", origin_offset);

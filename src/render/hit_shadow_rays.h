@@ -7,10 +7,7 @@
 // A GPU backend that traces the hits' shadow rays with the hits (rt::DeviceTracing::
 // traces_hit_shadows: cuda) writes and answers them in the closest-hit trace's CUDA work instead
 // (RayTracedReflections maps answers() for it), by the same rule (rt/hit_shadow_ray.h), which saves
-// a GL pass and a GL-CUDA hand-over between the two traces; run() then does nothing. So does the gl
-// backend, whose reflection trace makes and traces each hit's shadow ray in one pass after the
-// closest hits (GlReflectionTrace, shaders/hit_shadows_inline.comp.glsl, the rule shared with this
-// pass's shader in shaders/include/hit_shadow_ray.glsl), unless gl_inline is off.
+// a GL pass and a GL-CUDA hand-over between the two traces; run() then does nothing.
 //   inputs:  RayHitBuffers (rays, hits, counters), GpuScene, FrameConstants UBO (light)
 //   outputs: OcclusionBuffers rays and answers, slot i for reflection ray i
 #include "gl/shader_program.h"
@@ -28,9 +25,8 @@ namespace glint::render {
 class HitShadowRays {
 public:
   // Room for `capacity` rays (the reflection buffers'); `tracer` must outlive this; origin_offset:
-  // world distance along the normal (>= 0, finite). gl_inline: with the gl backend, traced with the
-  // hits (RayTracingSettings::gl_inline_shadow_rays). Needs a current GL context.
-  HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset, bool gl_inline = true);
+  // world distance along the normal (>= 0, finite). Needs a current GL context.
+  HitShadowRays(std::size_t capacity, rt::RayTracer& tracer, float origin_offset);
 
   // Writes and traces the shadow rays of the reflection hits in `buffers`: `max_rays` slots (the
   // list's count when the host knows it, CPU backends; else the capacity, the shader reading the
@@ -39,8 +35,7 @@ public:
 
   const OcclusionBuffers& answers() const { return buffers_; }
   OcclusionBuffers& answers() { return buffers_; }
-  // Whether the tracer (cuda) or the gl backend's trace step writes and traces them within the
-  // closest-hit trace (run() does nothing).
+  // Whether the tracer writes and traces them within its closest-hit trace (run() does nothing).
   bool traced_with_hits() const { return traced_with_hits_; }
   float origin_offset() const { return origin_offset_; }
 

@@ -5,8 +5,7 @@
 
 namespace glint::render {
 
-std::uint32_t HostReflectionTrace::trace(std::size_t slot, const HitShadowFrame&, GpuTimer*,
-                                         const std::function<void()>& with_the_rays) {
+std::uint32_t HostReflectionTrace::trace(std::size_t slot, vec3, GpuTimer*, const std::function<void()>& with_the_rays) {
   if (with_the_rays) with_the_rays();  // the CPU traces: no hand-over to share
   const RayListCounts counts = buffers_.finish_ray_list(slot);  // the mid-frame wait
   GlPassScope scope("trace");

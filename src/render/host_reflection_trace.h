@@ -12,7 +12,7 @@ class HostReflectionTrace final : public ReflectionTraceStep {
 public:
   HostReflectionTrace(rt::RayTracer& tracer, RayHitBuffers& buffers) : tracer_(tracer), buffers_(buffers) {}
 
-  std::uint32_t trace(std::size_t slot, const HitShadowFrame& frame, GpuTimer* timer,
+  std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
                       const std::function<void()>& with_the_rays) override;
   void finish(std::size_t) override {}
   std::optional<RayTraceFrameStats> stats(std::size_t slot, bool) override { return stats_[slot]; }

@@ -19,8 +19,7 @@ std::size_t answer_bytes(std::size_t capacity, RayQuery query, bool device) {
 
 }  // namespace
 
-OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query,
-                                   RayStorage storage)
+OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query)
     : capacity_(capacity),
       what_(what),
       query_(query),
@@ -28,12 +27,10 @@ OcclusionBuffers::OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, 
       device_(tracer.device_tracing()),
       gl_(tracer.gl_tracing()) {
   if (capacity == 0) fail("{}: capacity must be at least one ray", what_);
-  if (storage == RayStorage::answers_only && !gl_)
-    fail("{}: answers without rays are for the gl backend's inline traces, not the {} backend", what_, tracer.name());
   const auto count = static_cast<std::uint32_t>(capacity);
   ray_count_ = create_buffer(sizeof(count), &count, 0);
   if (device_ || gl_) {
-    if (storage == RayStorage::rays_and_answers) rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
+    rays_ = create_buffer(capacity * sizeof(accel::Ray), nullptr, 0);
     occluded_ = create_buffer(answer_bytes(capacity, query, true), nullptr, 0);
   }
   if (device_) {
@@ -68,7 +65,6 @@ void OcclusionBuffers::finish_trace() { held_map_.reset(); }
 
 void OcclusionBuffers::start_trace(std::size_t host_count) {
   if (held_map_) fail("{}: a trace started before the last one finished", what_);
-  if (!rays_) fail("{}: answers only (traced inline): there are no rays to trace", what_);
   if (gl_) {  // GL dispatches, ordered after the pass that wrote the rays by GL itself
     const auto capacity = static_cast<std::uint32_t>(capacity_);
     if (query_ == RayQuery::closest)

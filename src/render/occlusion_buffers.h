@@ -8,8 +8,7 @@
 //    mapped around each trace_any_device (one uint per ray; the count, `capacity`, sits in a GL
 //    buffer too), so the host never waits;
 //  - the gl backend: both in GPU memory, traced by its compute shaders (rt::GlTracing) like any
-//    other GL pass: no mapping, no hand-over; or the answers alone (RayStorage::answers_only), where
-//    a pass traces its rays inline and writes the answers itself.
+//    other GL pass: no mapping, no hand-over.
 //   rays     (kShadowRayBinding):       accel::Ray[capacity]; an empty ray (t_min > t_max) is never occluded
 //   answers  (kShadowOcclusionBinding): uint[], read in GLSL by occlusion_flag.glsl's
 //            `occluded(i)` with the flag_bytes() uniform (4: a uint per ray, 1: four bytes to a uint)
@@ -39,17 +38,10 @@ inline constexpr GLuint kShadowOcclusionBinding = 11;
 // Which query trace() asks: any hit (occlusion flags) or the closest hit (accel::Hit per ray).
 enum class RayQuery { any, closest };
 
-// What the buffers hold: the rays and their answers, or (gl backend only) the answers alone, which a
-// pass that makes and traces its rays inline writes itself (GlReflectionTrace: the hits' shadow
-// rays), so no ray list of capacity x 32 bytes is kept that nothing writes.
-enum class RayStorage { rays_and_answers, answers_only };
-
 class OcclusionBuffers {
 public:
-  // `tracer` must outlive this. glint::Error for capacity 0, or answers_only with another backend than
-  // gl. Needs a current GL context.
-  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query = RayQuery::any,
-                   RayStorage storage = RayStorage::rays_and_answers);
+  // `tracer` must outlive this. glint::Error for capacity 0. Needs a current GL context.
+  OcclusionBuffers(std::size_t capacity, rt::RayTracer& tracer, const char* what, RayQuery query = RayQuery::any);
   OcclusionBuffers(const OcclusionBuffers&) = delete;  // owns mapped pointers
   OcclusionBuffers& operator=(const OcclusionBuffers&) = delete;
 
@@ -77,9 +69,6 @@ public:
   std::span<const std::uint8_t> occluded() const;
   std::span<const accel::Hit> hits() const;  // RayQuery::closest
   std::size_t capacity() const { return capacity_; }
-  // The answers' GL buffer (GPU backends and gl: a uint per ray), for tests that read a GPU-side
-  // trace's answers back.
-  GLuint answer_buffer() const { return occluded_.id(); }
 
 private:
   std::size_t capacity_;

@@ -44,7 +44,7 @@ RayTracedReflections::RayTracedReflections(const Scene& scene, int width, int he
       hit_shading_(width, height, buffers_) {
   const float origin_offset = ray_origin_offset(settings.origin_offset_fraction, scene.world_bounds());
   ray_list_.set_origin_offset(origin_offset);
-  if (shadow_rays) hit_shadows_.emplace(buffers_.capacity(), tracer, origin_offset, settings.gl_inline_shadow_rays);
+  if (shadow_rays) hit_shadows_.emplace(buffers_.capacity(), tracer, origin_offset);
   trace_step_ = make_reflection_trace_step(tracer, buffers_, hit_shadows_ ? &*hit_shadows_ : nullptr);
 }
 
@@ -70,9 +70,7 @@ void RayTracedReflections::list(const RasterPipeline& raster, GLuint failure_mas
 std::uint32_t RayTracedReflections::trace(const RasterPipeline& raster, GpuTimer* timer,
                                           const std::function<void()>& with_the_rays) {
   const auto slot = static_cast<std::size_t>(runs_ % kFramesInFlight);
-  const HitShadowFrame frame{raster.frame_constants().light_position_range, &raster.gpu_scene(),
-                             raster.frame_constants_buffer()};
-  return trace_step_->trace(slot, frame, timer, with_the_rays);
+  return trace_step_->trace(slot, raster.frame_constants().light_position_range, timer, with_the_rays);
 }
 
 void RayTracedReflections::shade(const RasterPipeline& raster, GLuint reflection, std::uint32_t listed,

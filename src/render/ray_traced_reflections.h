@@ -48,11 +48,12 @@ struct RayTracingSettings {
   // Ray origins move this fraction of the scene's bounding-box diagonal along the surface normal
   // (enough to leave a flat surface at float precision, far below a visible gap).
   float origin_offset_fraction = 1e-4f;
-  // The gl backend traces shadow rays inline, in the passes that make them (rt::GlTracing::
-  // bind_inline_tracing): the dense shadow rays are made, traced and turned into the mask in one
-  // dispatch (RayTracedShadows), the reflection hits' shadow rays are traced right after their hits
-  // (GlReflectionTrace). false: the three steps the other backends take (ray list, trace_any_gl,
-  // mask), kept so that tests can compare the two; other backends ignore it.
+  // The gl backend traces the dense shadow rays inline, in the pass that makes them (rt::GlTracing::
+  // bind_inline_tracing): made, traced and turned into the mask in one dispatch (RayTracedShadows).
+  // false: the three steps the other backends take (ray list, trace_any_gl, mask), kept so that
+  // tests can compare the two; other backends ignore it. The reflection hits' shadow rays take the
+  // three steps: made and traced in one pass they took twice as long on an H100 (docs/perf.md
+  // "Eleventh round").
   bool gl_inline_shadow_rays = true;
 
   void validate() const;  // glint::Error naming the first bad field (an unknown backend: at construction)

@@ -14,7 +14,7 @@ std::unique_ptr<ReflectionTraceStep> make_reflection_trace_step(rt::RayTracer& t
                                                                 HitShadowRays* hit_shadows) {
   if (rt::DeviceTracing* device = tracer.device_tracing())
     return std::make_unique<DeviceReflectionTrace>(*device, buffers, hit_shadows);
-  if (rt::GlTracing* gl = tracer.gl_tracing()) return std::make_unique<GlReflectionTrace>(*gl, buffers, hit_shadows);
+  if (rt::GlTracing* gl = tracer.gl_tracing()) return std::make_unique<GlReflectionTrace>(*gl, buffers);
   return std::make_unique<HostReflectionTrace>(tracer, buffers);
 }
 

@@ -19,18 +19,7 @@
 
 namespace glint::render {
 
-class GpuScene;
 class HitShadowRays;
-
-// What a step that traces the hits' shadow rays with the hits needs of the frame: the light (the
-// cuda backend's rule takes it as a value), and for the gl step, whose rule rebuilds the hit point
-// from the scene as hit shading does and reads the light from the frame constants, the GpuScene and
-// the frame constants' buffer.
-struct HitShadowFrame {
-  vec3 light_position{0.0f};
-  const GpuScene* scene = nullptr;
-  GLuint frame_constants = 0;
-};
 
 struct RayTraceFrameStats {
   std::uint32_t rays_traced = 0;        // rays in the list, all traced
@@ -50,12 +39,12 @@ public:
   virtual ~ReflectionTraceStep() = default;
 
   // Traces the rays the ray-list pass just wrote for readback slot `slot` (run % kFramesInFlight)
-  // into the hit buffer; `frame` is for the hits' shadow rays where the backend traces them with the
-  // hits. `with_the_rays` (may be empty) is other work to issue in the same hand-over, before
+  // into the hit buffer; `light_position` is for the hits' shadow rays where the backend traces them
+  // with the hits. `with_the_rays` (may be empty) is other work to issue in the same hand-over, before
   // the reflection rays: the device step issues it inside its mapping and its timed pass, the others
   // just before their own trace, untimed. Returns how many list entries hit shading must look at
   // (the list's count when the host knows it, else the buffers' capacity: the GPU reads the count).
-  virtual std::uint32_t trace(std::size_t slot, const HitShadowFrame& frame, GpuTimer* timer,
+  virtual std::uint32_t trace(std::size_t slot, vec3 light_position, GpuTimer* timer,
                               const std::function<void()>& with_the_rays) = 0;
   // After hit shading was issued: queue what stats() needs of this slot (GPU steps: the counters).
   virtual void finish(std::size_t slot) = 0;
