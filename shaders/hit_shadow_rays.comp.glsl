@@ -7,8 +7,9 @@
 //   origin    = hit point + origin_offset * n
 //   direction = light position - origin (unnormalised), t in [0, 1 - 1e-4]: the light is at t = 1
 // A miss, a degenerate triangle, a hit facing away from the light (unlit whatever the shadow says)
-// and, on a GPU backend, a slot past the list's count get an empty ray (t_min > t_max), which is
-// never occluded. The hit point is surface_point()'s, as hit shading rebuilds it.
+// and, on a device backend (empty_past_count), a slot past the list's count get an empty ray (t_min >
+// t_max), which is never occluded; the gl backend traces only up to the count, so those slots are
+// left alone. The hit point is surface_point()'s, as hit shading rebuilds it.
 layout(local_size_x = 64) in;
 
 #include "include/frame_constants.glsl"
@@ -23,13 +24,14 @@ layout(std430, binding = 10) writeonly buffer ShadowRays { Ray shadow_rays[]; };
 
 uniform float origin_offset;
 uniform int max_rays;  // the dispatch's extent: the count (CPU backends) or the capacity
+uniform int empty_past_count;  // 1: slots past the count get an empty ray (their tracer reads them)
 
 const uint kInvalidIndex = 0xFFFFFFFFu;
 const float kShadowRayEnd = 1.0 - 1e-4;
 
 void main() {
   const uint i = gl_GlobalInvocationID.x;
-  if (i >= uint(max_rays)) return;
+  if (i >= uint(max_rays) || (i >= ray_count && empty_past_count == 0)) return;
   const Ray no_ray = Ray(vec3(0.0), 1.0, vec3(0.0, 0.0, 1.0), 0.0);
   if (i >= ray_count || hits[i].prim == kInvalidIndex) {
     shadow_rays[i] = no_ray;

@@ -56,21 +56,22 @@ void OcclusionBuffers::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowOcclusionBinding, occluded_.id());
 }
 
-void OcclusionBuffers::trace(std::size_t host_count) {
-  start_trace(host_count);
+void OcclusionBuffers::trace(std::size_t host_count, GLuint gl_count) {
+  start_trace(host_count, gl_count);
   finish_trace();
 }
 
 void OcclusionBuffers::finish_trace() { held_map_.reset(); }
 
-void OcclusionBuffers::start_trace(std::size_t host_count) {
+void OcclusionBuffers::start_trace(std::size_t host_count, GLuint gl_count) {
   if (held_map_) fail("{}: a trace started before the last one finished", what_);
   if (gl_) {  // GL dispatches, ordered after the pass that wrote the rays by GL itself
     const auto capacity = static_cast<std::uint32_t>(capacity_);
+    const GLuint count = gl_count != 0 ? gl_count : ray_count_.id();
     if (query_ == RayQuery::closest)
-      gl_->trace_closest_gl(rays_.id(), occluded_.id(), ray_count_.id(), capacity);
+      gl_->trace_closest_gl(rays_.id(), occluded_.id(), count, capacity);
     else
-      gl_->trace_any_gl(rays_.id(), occluded_.id(), ray_count_.id(), capacity);
+      gl_->trace_any_gl(rays_.id(), occluded_.id(), count, capacity);
     return;
   }
   if (device_) {

@@ -47,16 +47,21 @@ public:
 
   void bind() const;  // rays and answers to their storage bindings
   int flag_bytes() const { return device_ || gl_ ? 4 : 1; }
+  // Whether the gl backend traces them (GL dispatches; trace() may take a GL count buffer).
+  bool traces_on_gl() const { return gl_ != nullptr; }
 
   // After the pass that wrote the rays was issued (and a shader-storage barrier): answers them.
   // CPU backends trace the first `host_count` rays after waiting for the GPU; GPU backends trace
-  // all `capacity` on the tracer's stream (rays past the frame's count must be empty).
-  void trace(std::size_t host_count);
+  // all `capacity` on the tracer's stream (rays past the frame's count must be empty). The gl
+  // backend reads how many from the first uint of `gl_count` where given (a GL buffer the pass that
+  // wrote the rays also counted in, so that it need not trace, nor write, the empty rays past it),
+  // else traces `capacity` as well.
+  void trace(std::size_t host_count, GLuint gl_count = 0);
   // trace() in two halves: a GPU backend keeps the buffers mapped into CUDA from start_trace() to
   // finish_trace(), so that a caller enqueuing more CUDA work in between (FramePipeline: the
   // reflection rays) unmaps only after all of it: an unmap followed by more CUDA work costs the
   // frame a GL-CUDA round trip (docs/perf.md "Seventh round"). Other backends trace in start_trace().
-  void start_trace(std::size_t host_count);
+  void start_trace(std::size_t host_count, GLuint gl_count = 0);
   void finish_trace();
 
   // GPU backends: rays (pointer 0), answers (1) and count (2) mapped into CUDA on the tracer's
