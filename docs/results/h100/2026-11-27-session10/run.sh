@@ -96,3 +96,29 @@ if [ "$STEP" = f ]; then
   done; done
   python3 tools/scope_table.py $R/s/* > $R/scopes.md 2>&1; grep -E "^\| (scope|trace|shadow/shadow_rays/inline_trace)" $R/scopes.md
 fi
+# g: images of the gl backend deforming on the GPU (GL deformer, GL refit) against the first binary's
+# host deformation and refit (both --update refit), 8 frames, glint compare (SSIM, PSNR).
+if [ "$STEP" = g ]; then
+  for bin in base new; do g=glint; [ $bin = base ] && g=/tmp/w/glint-base
+    timeout 60 $g render atrium --backend gl --reflections hybrid --width 1280 --height 720 --frames 2096:2103 \
+      $common --shadows rt --deform on --update refit --out $R/img-$bin > $R/img.log 2>&1 || { echo "images $bin failed"; tail -2 $R/img.log; }
+  done
+  grep -o '"deform_on": *"[a-z]*"' $R/img-base/run.json $R/img-new/run.json
+  for f in $R/img-base/frame_*.png; do echo "$(basename $f): $(glint compare $f $R/img-new/$(basename $f) 2>&1 | tr '\n' ' ' | cut -c1-300)"; done
+  rm -rf $R/img-*
+fi
+# h: scenes it was not tuned for: atrium-simple and sponza, gl against cuda (frames, and the gl frame
+# against the cuda frame: glint compare), this tree.
+if [ "$STEP" = h ]; then
+  for scene in atrium-simple sponza; do for be in cuda gl; do for rep in 1 2; do
+    timeout 90 glint render $scene --backend $be --reflections hybrid --width 1280 --height 720 --frames 2071:2110 \
+      --timings-only $common --shadows rt --update refit --out $R/f/$scene-$be-r$rep > $R/f.log 2>&1 || { echo "$scene $be failed"; tail -2 $R/f.log; }
+  done
+    timeout 90 glint render $scene --backend $be --reflections hybrid --width 1280 --height 720 --frames 1800,2100,2300,4400 \
+      $common --shadows rt --update refit --out $R/img-$scene-$be > $R/img.log 2>&1 || { echo "images $scene $be failed"; tail -2 $R/img.log; }
+  done
+    for f in $R/img-$scene-cuda/frame_*.png; do echo "$scene $(basename $f) gl vs cuda: $(glint compare $R/img-$scene-gl/$(basename $f) $f 2>&1 | grep -E 'SSIM|PSNR|buckets' | tr -s ' ' | tr '\n' ' ')"; done
+  done
+  python3 tools/frame_table.py $R/f > $R/frames.md 2>&1; cat $R/frames.md
+  rm -rf $R/img-* $R/f/*/frame_*.png
+fi
