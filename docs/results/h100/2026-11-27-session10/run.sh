@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Session 10's GPU calls (H100). a: tests of what changed; b: this tree (new) against the session's
-# first binary (base): frames, scopes, images; c: the whole suite.
+# first binary (base): frames, scopes, images; c: the whole suite; d-h below.
+# Result files by call (UTC): a1 04:47 and b1 04:48 (the tree with the helpers' fused hit-shadow
+# kernel); d1 05:02; e 05:04; f1 05:14, f2 05:15 (inline hit-shadow variants); c 05:23; b2 05:28 and
+# d2 05:29 (hit shadows back to two steps, 92603ac); a2 and b3 05:38-05:39 (e937393, the final code);
+# g 05:41; h 05:46.
 set -u
 STEP=$1
 R=/tmp/r-$STEP; rm -rf $R; mkdir -p $R
