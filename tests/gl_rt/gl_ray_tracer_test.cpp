@@ -9,6 +9,7 @@
 #include "accel/builders/builder.h"
 #include "gl/gl_objects.h"
 #include "gl/gl_test_context.h"
+#include "gl/read_buffer.h"
 #include "rt/ray_tracer.h"
 #include "rt/ray_tracer_check.h"
 #include "rt/reflection_rays.h"
@@ -36,6 +37,7 @@ using testing::compare_occluded;
 using testing::hit_exists;
 using testing::random_rays;
 using testing::trace;
+using testing::read_buffer;
 using testing::trace_occluded;
 
 using GlRayTracerTest = testing::GlTest;
@@ -56,13 +58,6 @@ size_t count_ones(std::span<const uint8_t> flags) {
 template <typename T>
 GlBuffer buffer_of(const std::vector<T>& data) {
   return create_buffer(std::span<const T>(data), GL_DYNAMIC_STORAGE_BIT);
-}
-
-template <typename T>
-std::vector<T> read_back(const GlBuffer& buffer, size_t count) {
-  std::vector<T> data(count);
-  glGetNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(count * sizeof(T)), data.data());
-  return data;
 }
 
 TEST(GlRayTracerContext, WithoutACurrentContextItIsOneClearError) {
@@ -169,8 +164,8 @@ TEST_F(GlRayTracerTest, GlSideTracesReadTheCountOnTheGpuAndLeaveLaterSlotsAlone)
     rt::GlTracing& gl = *tracer.gl_tracing();
     gl.trace_closest_gl(ray_buffer.id(), hit_buffer.id(), count_buffer.id(), capacity);
     gl.trace_any_gl(ray_buffer.id(), occluded_buffer.id(), count_buffer.id(), capacity);
-    const std::vector<accel::Hit> hits = read_back<accel::Hit>(hit_buffer, capacity);
-    const std::vector<uint32_t> occluded = read_back<uint32_t>(occluded_buffer, capacity);
+    const std::vector<accel::Hit> hits = read_buffer<accel::Hit>(hit_buffer.id(), 0, capacity);
+    const std::vector<uint32_t> occluded = read_buffer<uint32_t>(occluded_buffer.id(), 0, capacity);
     const uint32_t traced = std::min(count, capacity);
     size_t wrong = 0, written_past = 0;
     for (uint32_t i = 0; i < capacity; ++i) {
@@ -208,7 +203,7 @@ TEST_F(GlRayTracerTest, ListsLongerThanOneDispatchAreTracedInPieces) {
   const GlBuffer count_buffer = buffer_of(std::vector<uint32_t>{count});
   const GlBuffer hit_buffer = buffer_of(std::vector<accel::Hit>(capacity));
   pieces.trace_closest_gl(ray_buffer.id(), hit_buffer.id(), count_buffer.id(), capacity);
-  const std::vector<accel::Hit> gl_hits = read_back<accel::Hit>(hit_buffer, capacity);
+  const std::vector<accel::Hit> gl_hits = read_buffer<accel::Hit>(hit_buffer.id(), 0, capacity);
   size_t wrong = 0, written_past = 0;
   for (uint32_t i = 0; i < capacity; ++i) {
     if (i < count) wrong += gl_hits[i].prim != hits[i].prim || gl_hits[i].instance != hits[i].instance ? 1 : 0;

@@ -11,6 +11,7 @@
 #include "backends/registry.h"
 #include "accel/tlas.h"
 #include "gl/gl_test_context.h"
+#include "gl/read_buffer.h"
 #include "gl_rt/mesh_blases.h"
 #include "render/transformed_scene.h"
 #include "rt/ray_tracer_check.h"
@@ -34,17 +35,11 @@ using testing::compare_hits;
 using testing::compare_occluded;
 using testing::random_rays;
 using testing::trace;
+using testing::read_buffer;
 using testing::trace_occluded;
 
 using GlRefitTest = testing::GlTest;
 
-template <typename T>
-std::vector<T> read_back(GLuint buffer, size_t first, size_t count) {
-  std::vector<T> data(count);
-  glGetNamedBufferSubData(buffer, static_cast<GLintptr>(first * sizeof(T)), static_cast<GLsizeiptr>(count * sizeof(T)),
-                          data.data());
-  return data;
-}
 
 // What a GL-side deformer does: the meshes' positions written into the tracer's vertex ranges.
 void write_positions(GlRayTracer& tracer, const Scene& scene, std::span<const uint32_t> meshes) {
@@ -93,16 +88,16 @@ void expect_structures_equal(const GlRayTracer& tracer, const HostStructures& ho
   for (uint32_t m = 0; m < host.blases.meshes().size(); ++m) {
     const auto& nodes = host.blases.meshes()[m].bvh.nodes;
     ASSERT_EQ(gl.region(m).node_count, nodes.size());
-    EXPECT_EQ(compare_nodes(nodes, read_back<accel::BvhNode>(gl.nodes(), gl.region(m).node_offset, nodes.size()),
+    EXPECT_EQ(compare_nodes(nodes, read_buffer<accel::BvhNode>(gl.nodes(), gl.region(m).node_offset, nodes.size()),
                             what + ", BLAS " + std::to_string(m)),
               "");
   }
   const auto& tlas = host.tlas.bvh.nodes;
   ASSERT_EQ(gl.tlas_node_count(), tlas.size());
-  EXPECT_EQ(compare_nodes(tlas, read_back<accel::BvhNode>(gl.nodes(), 0, tlas.size()), what + ", TLAS"), "");
+  EXPECT_EQ(compare_nodes(tlas, read_buffer<accel::BvhNode>(gl.nodes(), 0, tlas.size()), what + ", TLAS"), "");
   // Each TLAS leaf holds its instances' world boxes (accel's rule) and equals their union.
   const std::vector<Aabb> world = accel::instance_world_boxes(host.blases.blases(), host.tlas.instances);
-  const std::vector<accel::BvhNode> gl_tlas = read_back<accel::BvhNode>(gl.nodes(), 0, tlas.size());
+  const std::vector<accel::BvhNode> gl_tlas = read_buffer<accel::BvhNode>(gl.nodes(), 0, tlas.size());
   size_t outside = 0;
   for (const accel::BvhNode& node : gl_tlas) {
     if (!node.is_leaf()) continue;
@@ -117,7 +112,7 @@ void expect_structures_equal(const GlRayTracer& tracer, const HostStructures& ho
   const size_t links = gl.region(static_cast<uint32_t>(gl.mesh_count() - 1)).node_offset +
                        gl.region(static_cast<uint32_t>(gl.mesh_count() - 1)).node_capacity;
   size_t counting = 0;
-  for (const glm::uvec2& link : read_back<glm::uvec2>(gl.links(), 0, links)) counting += link.y != 0 ? 1 : 0;
+  for (const glm::uvec2& link : read_buffer<glm::uvec2>(gl.links(), 0, links)) counting += link.y != 0 ? 1 : 0;
   EXPECT_EQ(counting, 0u) << what << ": arrival counters left non-zero";
 }
 

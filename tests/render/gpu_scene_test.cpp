@@ -1,5 +1,6 @@
 // GpuScene: the buffer layout the hit-shading pass relies on, in-place vertex updates, bad input.
 #include "gl/gl_test_context.h"
+#include "gl/read_buffer.h"
 #include "raster_test_scene.h"
 #include "render/gpu_scene.h"
 #include "render/raster_pipeline.h"
@@ -17,14 +18,8 @@ using render::GpuScene;
 using render::RasterOutput;
 using render::RasterPipeline;
 using testing::error_of;
+using testing::read_buffer;
 using GpuSceneTest = testing::GlTest;
-
-template <typename T>
-std::vector<T> read_buffer(GLuint buffer, std::size_t count) {
-  std::vector<T> data(count);
-  glGetNamedBufferSubData(buffer, 0, static_cast<GLsizeiptr>(count * sizeof(T)), data.data());
-  return data;
-}
 
 // Two meshes, the second drawn twice: ranges, instances and materials say where everything is, and
 // the GPU buffers hold exactly that (a compute shader can fetch any triangle of any instance).
@@ -57,8 +52,8 @@ TEST_F(GpuSceneTest, BuffersFollowTheDocumentedLayout) {
   EXPECT_EQ(gpu.materials()[a].texture_layer, -1);
 
   // Fetch triangle 1 of mesh 1 the way a shader would: indices[first_index + 3p + k] + base_vertex.
-  const auto indices = read_buffer<std::uint32_t>(gpu.index_buffer(), 12);
-  const auto vertices = read_buffer<render::GpuVertex>(gpu.vertex_buffer(), 8);
+  const auto indices = read_buffer<std::uint32_t>(gpu.index_buffer(), 0, 12);
+  const auto vertices = read_buffer<render::GpuVertex>(gpu.vertex_buffer(), 0, 8);
   const render::GpuMeshRange range = gpu.mesh_ranges()[1];
   for (int k = 0; k < 3; ++k) {
     const std::uint32_t local = scene.meshes[1].indices[3 + static_cast<std::size_t>(k)];
@@ -68,9 +63,9 @@ TEST_F(GpuSceneTest, BuffersFollowTheDocumentedLayout) {
     EXPECT_EQ(vec3(vertex.normal_v), scene.meshes[1].normals[local]);
     EXPECT_EQ(vec2(vertex.position_u.w, vertex.normal_v.w), scene.meshes[1].uvs[local]);
   }
-  const auto gpu_instances = read_buffer<render::GpuInstance>(gpu.instance_buffer(), 3);
+  const auto gpu_instances = read_buffer<render::GpuInstance>(gpu.instance_buffer(), 0, 3);
   EXPECT_EQ(gpu_instances[2].model, copy.transform);
-  const auto gpu_materials = read_buffer<render::GpuMaterial>(gpu.material_buffer(), 2);
+  const auto gpu_materials = read_buffer<render::GpuMaterial>(gpu.material_buffer(), 0, 2);
   EXPECT_EQ(gpu_materials[b].diffuse, vec4(0.9f, 0.9f, 0.9f, 1.0f));
 }
 
@@ -101,7 +96,7 @@ TEST_F(GpuSceneTest, UpdateMeshVerticesMovesTheGeometry) {
     EXPECT_NEAR(glm::length(vec3(normal.at(x, 16)) - normals[0]), 0.0f, 2e-3f);
   }
   // The other mesh is untouched, uvs kept.
-  const auto vertices = read_buffer<render::GpuVertex>(raster.gpu_scene().vertex_buffer(), 8);
+  const auto vertices = read_buffer<render::GpuVertex>(raster.gpu_scene().vertex_buffer(), 0, 8);
   EXPECT_EQ(vec3(vertices[0].position_u), scene.meshes[0].positions[0]);
   EXPECT_EQ(vec2(vertices[6].position_u.w, vertices[6].normal_v.w), scene.meshes[moving].uvs[2]);
   EXPECT_EQ(vec3(vertices[6].position_u), positions[2]);
