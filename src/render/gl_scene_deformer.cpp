@@ -3,32 +3,36 @@
 #include "core/error.h"
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
-#include "render/compute_dispatch.h"
+
+#include <algorithm>
 
 namespace glint::render {
 namespace {
 
 // shaders/sine_deform.comp.glsl's storage bindings (1 is the scene's vertex buffer, gpu_scene.h).
 constexpr GLuint kRestBinding = 12, kIndexBinding = 13, kVertexOffsetBinding = 14, kVertexTriangleBinding = 15,
-                 kPosedBinding = 16, kFaceNormalBinding = 17;
-// Its uniform-buffer binding of the mesh's MeshConstants (0 is FrameConstants: the uniform-buffer
-// bindings are listed beside kFrameConstantsBinding, render/frame_constants.h).
-constexpr GLuint kMeshConstantsBinding = 1;
-constexpr GLuint kGroupSize = 64;  // local_size_x
+                 kPosedBinding = 16, kFaceNormalBinding = 17, kJobBinding = 18;
+constexpr GLuint kGroupSize = 64;                // local_size_x
+constexpr std::uint64_t kMaxGroups = 65535;      // per dimension, GL's guaranteed minimum
+constexpr std::uint64_t kMaxIndex = 0xFFFFFFFF;  // the shader indexes and counts invocations in uint
 
-// The shader's MeshConstants block (std140: eight 4-byte scalars in order): what one mesh's passes
-// read that never changes, written once, so a frame sets only the time and the stage.
-struct MeshConstants {
-  std::int32_t vertex_count = 0;
-  std::int32_t triangle_count = 0;
-  std::int32_t base_vertex = 0;  // the mesh's first vertex in the scene's vertex buffer
+// The shader's DeformJob (std430: twelve 4-byte scalars in order): one mesh's place in the dispatches
+// and the concatenated arrays, and its deformation; written once, so a frame sets only the time.
+struct DeformJob {
+  std::uint32_t first_invocation = 0;  // in the pose stage
+  std::uint32_t first_vertex = 0;      // in rest, posed and vertex_offsets; the normals stage's first invocation
+  std::uint32_t first_triangle = 0;    // in face_normals
+  std::uint32_t vertex_count = 0;
+  std::uint32_t triangle_count = 0;
+  std::uint32_t base_vertex = 0;  // the mesh's first vertex in the scene's vertex buffer
   std::int32_t displace_axis = 0;
   std::int32_t wave_axis = 0;
   float amplitude = 0.0f;
   float frequency = 0.0f;
   float speed = 0.0f;
+  std::uint32_t padding = 0;
 };
-static_assert(sizeof(MeshConstants) == 32);
+static_assert(sizeof(DeformJob) == 48);
 
 // A storage buffer of at least one element (GL refuses empty storage).
 template <typename T>
@@ -39,8 +43,26 @@ GlBuffer storage(const std::vector<T>& values) {
 
 }  // namespace
 
+// As gl_refit.cpp's dispatch_over: one dimension alone stops at 65,535 groups (4.2 million vertices).
+GlSceneDeformer::Grid GlSceneDeformer::grid_over(std::uint64_t items) {
+  const std::uint64_t groups = (items + kGroupSize - 1) / kGroupSize;
+  if (groups == 0) return {};
+  const std::uint64_t columns = std::min(groups, kMaxGroups);
+  const std::uint64_t rows = (groups + columns - 1) / columns;
+  // Past 2^32 the shader's invocation index would wrap onto earlier invocations.
+  if (columns * rows * kGroupSize > kMaxIndex + 1)
+    fail("GL deformer: {} invocations in one dispatch, more than 32-bit indices count", items);
+  return {static_cast<GLuint>(columns), static_cast<GLuint>(rows)};
+}
+
 GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scene)
     : deformers_(deformers), scene_(scene), program_(ShaderProgram::from_embedded({"sine_deform.comp.glsl"})) {
+  // The meshes one after the other, their indices rebased into the concatenation, so the shader adds
+  // no per-mesh offset to what it reads.
+  std::vector<vec4> rest;
+  std::vector<std::uint32_t> indices, vertex_offsets, vertex_triangles;
+  std::vector<DeformJob> jobs;
+  std::uint64_t vertices = 0, triangles = 0, corners = 0, invocations = 0;
   for (std::size_t k = 0; k < deformers.deformers().size(); ++k) {
     const SineDeformer& deformer = deformers.deformers()[k];
     const std::uint32_t mesh = deformers.meshes()[k];
@@ -51,59 +73,73 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
     if (range.vertex_count != deformer.vertex_count())
       fail("GL deformer: mesh '{}' has {} vertices in the GPU scene but {} in its deformer", deformer.mesh_name(),
            range.vertex_count, deformer.vertex_count());
-    if (deformer.vertex_offsets().back() > 0xFFFFFFFFull)
-      fail("GL deformer: mesh '{}' has too many triangle corners", deformer.mesh_name());
-    MeshBuffers buffers;
-    buffers.vertex_count = static_cast<std::uint32_t>(deformer.vertex_count());
-    buffers.triangle_count = static_cast<std::uint32_t>(deformer.indices().size() / 3);
-    std::vector<vec4> rest;
-    rest.reserve(deformer.rest_positions().size());
-    for (const vec3& p : deformer.rest_positions()) rest.emplace_back(p, 0.0f);
-    buffers.rest = storage(rest);
-    buffers.indices = storage(deformer.indices());
-    buffers.vertex_offsets =
-        storage(std::vector<std::uint32_t>(deformer.vertex_offsets().begin(), deformer.vertex_offsets().end()));
-    buffers.vertex_triangles = storage(deformer.vertex_triangles());
-    buffers.posed = create_buffer(std::max<std::size_t>(rest.size(), 1) * sizeof(vec4), nullptr);
-    buffers.face_normals = create_buffer(std::max<std::size_t>(buffers.triangle_count, 1) * sizeof(vec4), nullptr);
+    posed_offsets_.push_back(static_cast<GLintptr>(vertices * sizeof(vec4)));
+    const std::uint64_t vertex_count = deformer.vertex_count(), triangle_count = deformer.indices().size() / 3;
+    if (vertex_count == 0) continue;  // no job: the search needs every job's first invocation distinct
     const SineDeform& parameters = deformer.parameters();
-    const MeshConstants constants{static_cast<std::int32_t>(buffers.vertex_count),
-                                  static_cast<std::int32_t>(buffers.triangle_count),
-                                  static_cast<std::int32_t>(range.base_vertex),
-                                  parameters.displace_axis,
-                                  parameters.wave_axis,
-                                  parameters.amplitude,
-                                  parameters.frequency,
-                                  parameters.speed};
-    buffers.constants = create_buffer(sizeof(constants), &constants);
-    meshes_.push_back(std::move(buffers));
+    jobs.push_back({static_cast<std::uint32_t>(invocations), static_cast<std::uint32_t>(vertices),
+                    static_cast<std::uint32_t>(triangles), static_cast<std::uint32_t>(vertex_count),
+                    static_cast<std::uint32_t>(triangle_count), range.base_vertex, parameters.displace_axis,
+                    parameters.wave_axis, parameters.amplitude, parameters.frequency, parameters.speed, 0});
+    for (const vec3& p : deformer.rest_positions()) rest.emplace_back(p, 0.0f);
+    for (const std::uint32_t index : deformer.indices()) indices.push_back(static_cast<std::uint32_t>(vertices + index));
+    // Each mesh's final offset is the next mesh's first: one closing entry after the loop.
+    for (std::size_t v = 0; v < vertex_count; ++v)
+      vertex_offsets.push_back(static_cast<std::uint32_t>(corners + deformer.vertex_offsets()[v]));
+    for (const std::uint32_t triangle : deformer.vertex_triangles())
+      vertex_triangles.push_back(static_cast<std::uint32_t>(triangles + triangle));
+    vertices += vertex_count;
+    triangles += triangle_count;
+    corners += deformer.vertex_offsets().back();
+    invocations += std::max(vertex_count, triangle_count);
   }
+  vertex_offsets.push_back(static_cast<std::uint32_t>(corners));
+  // Corners are 3 per triangle, so this bounds indices[3t + 2] too.
+  if (std::max({vertices, corners, invocations}) > kMaxIndex)
+    fail("GL deformer: the deformable meshes have {} vertices, {} triangle corners and {} pose invocations, more "
+         "than 32-bit indices count",
+         vertices, corners, invocations);
+  rest_ = storage(rest);
+  indices_ = storage(indices);
+  vertex_offsets_ = storage(vertex_offsets);
+  vertex_triangles_ = storage(vertex_triangles);
+  posed_ = create_buffer(std::max<std::uint64_t>(vertices, 1) * sizeof(vec4), nullptr);
+  face_normals_ = create_buffer(std::max<std::uint64_t>(triangles, 1) * sizeof(vec4), nullptr);
+  jobs_ = storage(jobs);
+  job_count_ = static_cast<std::uint32_t>(jobs.size());
+  pose_invocations_ = static_cast<std::uint32_t>(invocations);
+  vertex_count_ = static_cast<std::uint32_t>(vertices);
+  pose_grid_ = grid_over(pose_invocations_);
+  normals_grid_ = grid_over(vertex_count_);
+  glProgramUniform1ui(program_.id(), program_.uniform_location("job_count"), job_count_);
+  time_location_ = program_.uniform_location("time_seconds");
+  stage_location_ = program_.uniform_location("stage");
+  invocation_count_location_ = program_.uniform_location("invocation_count");
   check_gl("GL deformer: set-up");
 }
 
 void GlSceneDeformer::apply(int frame) {
   GlPassScope scope("deform");
-  const float time_seconds = deformers_.time_at(frame);
-  program_.use();
-  program_.set_uniform("time_seconds", time_seconds);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBufferBinding, scene_.vertex_buffer());
-  for (const MeshBuffers& mesh : meshes_) {
-    if (mesh.vertex_count == 0) continue;
-    glBindBufferBase(GL_UNIFORM_BUFFER, kMeshConstantsBinding, mesh.constants.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRestBinding, mesh.rest.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndexBinding, mesh.indices.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexOffsetBinding, mesh.vertex_offsets.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexTriangleBinding, mesh.vertex_triangles.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPosedBinding, mesh.posed.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFaceNormalBinding, mesh.face_normals.id());
-    const GLuint stages[] = {work_groups(mesh.vertex_count, kGroupSize), work_groups(mesh.triangle_count, kGroupSize),
-                             work_groups(mesh.vertex_count, kGroupSize)};
-    for (int stage = 0; stage < 3; ++stage) {
-      if (stages[stage] == 0) continue;
-      program_.set_uniform("stage", stage);
-      glDispatchCompute(stages[stage], 1, 1);
-      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    }
+  if (job_count_ > 0) {
+    glProgramUniform1f(program_.id(), time_location_, deformers_.time_at(frame));
+    program_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBufferBinding, scene_.vertex_buffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRestBinding, rest_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndexBinding, indices_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexOffsetBinding, vertex_offsets_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexTriangleBinding, vertex_triangles_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPosedBinding, posed_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFaceNormalBinding, face_normals_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kJobBinding, jobs_.id());
+    // Pose: every vertex's position and every triangle's normal.
+    glProgramUniform1i(program_.id(), stage_location_, 0);
+    glProgramUniform1ui(program_.id(), invocation_count_location_, pose_invocations_);
+    glDispatchCompute(pose_grid_.columns, pose_grid_.rows, 1);
+    // The normals stage reads the posed positions and every triangle's normal around a vertex.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glProgramUniform1i(program_.id(), stage_location_, 1);
+    glProgramUniform1ui(program_.id(), invocation_count_location_, vertex_count_);
+    glDispatchCompute(normals_grid_.columns, normals_grid_.rows, 1);
   }
   // The raster passes read the vertices as vertex attributes and storage.
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);

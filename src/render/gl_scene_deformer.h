@@ -1,7 +1,9 @@
 #pragma once
 // --deform-on gpu, GL's half: the scene's sine deformers as GL compute passes that pose the frame
 // pipeline's vertex buffer in place (positions and smooth normals, as SineDeformer does on the CPU;
-// shaders/sine_deform.comp.glsl), ordered with the raster passes by GL itself. A GPU ray tracer's
+// shaders/sine_deform.comp.glsl), ordered with the raster passes by GL itself. Every mesh is posed in
+// the same two dispatches (pose, then normals) over the meshes' arrays concatenated: a frame's cost
+// is two dispatches' latency, not three per mesh. A GPU ray tracer's
 // device positions are posed apart, by cuda::GpuSceneDeformer on the tracer's stream; neither side
 // waits for the other, so a deforming frame has no GL-CUDA hand-over of its own (one cost about
 // 0.33 ms of an H100 frame: docs/perf.md "Deforming without a hand-over").
@@ -28,21 +30,35 @@ public:
 
   // The scene meshes it poses, ascending (SceneDeformers::meshes).
   const std::vector<std::uint32_t>& meshes() const { return deformers_.meshes(); }
-  // The object-space positions apply() posed for meshes()[k]: a buffer of vertex_count vec4s (w 0),
-  // written by a shader (a copy from it needs GL_BUFFER_UPDATE_BARRIER_BIT first).
-  GLuint posed_positions(std::size_t k) const { return meshes_.at(k).posed.id(); }
+  // Where apply() posed meshes()[k]'s object-space positions: vertex_count vec4s (w 0) from
+  // offset_bytes in a buffer that holds every mesh's, written by a shader (a copy from it needs
+  // GL_BUFFER_UPDATE_BARRIER_BIT first).
+  struct PosedRange {
+    GLuint buffer = 0;
+    GLintptr offset_bytes = 0;
+  };
+  PosedRange posed_positions(std::size_t k) const { return {posed_.id(), posed_offsets_.at(k)}; }
 
 private:
-  struct MeshBuffers {
-    std::uint32_t vertex_count = 0;
-    std::uint32_t triangle_count = 0;
-    GlBuffer rest, indices, vertex_offsets, vertex_triangles, posed, face_normals;
-    GlBuffer constants;  // the shader's MeshConstants uniform block, written once
+  // A dispatch's work groups: columns x rows (deform_invocation() in the shader unfolds them).
+  struct Grid {
+    GLuint columns = 0;
+    GLuint rows = 0;
   };
+  // The grid of `items` invocations; glint::Error where it holds more than 32-bit indices count.
+  static Grid grid_over(std::uint64_t items);
+
   const SceneDeformers& deformers_;
   GpuScene& scene_;
-  std::vector<MeshBuffers> meshes_;  // parallel to deformers_.deformers()
   ShaderProgram program_;
+  // Every mesh's arrays, one after the other (the shader's bindings 12 to 17), and one DeformJob
+  // per mesh with vertices (binding 18).
+  GlBuffer rest_, indices_, vertex_offsets_, vertex_triangles_, posed_, face_normals_, jobs_;
+  std::vector<GLintptr> posed_offsets_;  // parallel to meshes()
+  std::uint32_t job_count_ = 0;
+  std::uint32_t pose_invocations_ = 0, vertex_count_ = 0;  // the two stages' invocation counts
+  Grid pose_grid_, normals_grid_;
+  GLint time_location_ = -1, stage_location_ = -1, invocation_count_location_ = -1;
 };
 
 }  // namespace glint::render

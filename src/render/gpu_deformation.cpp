@@ -50,7 +50,8 @@ void GpuDeformation::copy_poses_to_tracer() {
     // vec4 positions, so the copy is one range.
     const rt::GlTracing::VertexRange range = gl_tracer_->gl_positions(gl_.meshes()[k]);
     if (range.vertex_count == 0) continue;
-    glCopyNamedBufferSubData(gl_.posed_positions(k), range.buffer, 0, static_cast<GLintptr>(range.offset_bytes),
+    const GlSceneDeformer::PosedRange posed = gl_.posed_positions(k);
+    glCopyNamedBufferSubData(posed.buffer, range.buffer, posed.offset_bytes, static_cast<GLintptr>(range.offset_bytes),
                              static_cast<GLsizeiptr>(std::uint64_t{range.vertex_count} * sizeof(vec4)));
   }
 }

@@ -1,8 +1,12 @@
 // GlSceneDeformer (--deform-on gpu's GL half) against the CPU deformer: the vertex buffer it poses
-// must hold SineDeformer's positions and normals, and leave every other mesh and the uvs alone.
+// must hold SineDeformer's positions and normals, and leave every other mesh and the uvs alone; with
+// every mesh in the same two dispatches, each mesh must find its own job, and the posed positions
+// handed to gpu_deformation.cpp must sit at each mesh's offset.
 #include "render/gl_scene_deformer.h"
 
 #include "gl/gl_test_context.h"
+#include "gl/read_buffer.h"
+#include "raster_test_scene.h"
 #include "render/gpu_scene.h"
 #include "scene/presets.h"
 #include "scene/sine_deformer.h"
@@ -12,6 +16,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace glint::render {
@@ -25,6 +31,53 @@ std::vector<GpuVertex> read_vertices(const GpuScene& scene) {
   std::vector<GpuVertex> vertices(count);
   glGetNamedBufferSubData(scene.vertex_buffer(), 0, static_cast<GLsizeiptr>(count * sizeof(GpuVertex)), vertices.data());
   return vertices;
+}
+
+// A columns x rows grid of quads (two triangles each) in the xz plane from `origin`, cell `cell`
+// wide, with uvs, as its own mesh and instance: (columns + 1)(rows + 1) vertices, 2 columns rows
+// triangles. Deforms with `deform` when given. Returns the mesh index.
+std::uint32_t add_grid(Scene& scene, vec3 origin, int columns, int rows, float cell, std::optional<SineDeform> deform) {
+  Mesh mesh;
+  mesh.name = "grid" + std::to_string(scene.meshes.size());
+  for (int r = 0; r <= rows; ++r) {
+    for (int c = 0; c <= columns; ++c) {
+      mesh.positions.push_back(origin + vec3(static_cast<float>(c) * cell, 0.0f, -static_cast<float>(r) * cell));
+      mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
+      mesh.uvs.emplace_back(static_cast<float>(c) / static_cast<float>(columns), static_cast<float>(r) / static_cast<float>(rows));
+    }
+  }
+  const auto at = [columns](int c, int r) { return static_cast<std::uint32_t>(r * (columns + 1) + c); };
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < columns; ++c) {
+      mesh.indices.insert(mesh.indices.end(), {at(c, r), at(c + 1, r), at(c + 1, r + 1)});
+      mesh.indices.insert(mesh.indices.end(), {at(c, r), at(c + 1, r + 1), at(c, r + 1)});
+    }
+  }
+  mesh.deformable = deform.has_value();
+  mesh.deform = deform;
+  scene.meshes.push_back(std::move(mesh));
+  const std::uint32_t index = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  Instance instance;
+  instance.name = scene.meshes.back().name;
+  instance.mesh = index;
+  scene.instances.push_back(instance);
+  return index;
+}
+
+// Three deforming meshes of different sizes and deformations, none a multiple of the work group
+// (so meshes share work groups in both dispatches), with static meshes before and between them: a
+// grid with more triangles than vertices (its triangles set its share of the pose dispatch), a strip
+// with more vertices than triangles (its vertices do), and a small grid last.
+Scene three_deforming_meshes() {
+  Scene scene = testing::make_empty_test_scene(vec3(0.0f, 4.0f, 0.0f));
+  testing::add_material(scene, vec3(0.5f));
+  testing::add_quad(scene, vec3(-20.0f, 0.0f, 20.0f), vec3(40.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -40.0f), 0);
+  add_grid(scene, vec3(-3.0f, 1.0f, 2.0f), 20, 15, 0.2f, SineDeform{1, 0, 0.3f, 3.0f, 1.5f});  // 336 vertices, 600 triangles
+  add_grid(scene, vec3(2.0f, 0.5f, 1.0f), 3, 2, 0.5f, std::nullopt);                           // static, between them
+  add_grid(scene, vec3(-5.0f, 2.0f, -1.0f), 100, 1, 0.1f, SineDeform{2, 0, 0.2f, 5.0f, 2.5f});  // 202 vertices, 200 triangles
+  add_grid(scene, vec3(1.0f, 3.0f, -2.0f), 7, 5, 0.3f, SineDeform{0, 2, 0.15f, 2.0f, -1.0f});  // 48 vertices, 70 triangles
+  scene.validate();
+  return scene;
 }
 
 // The atrium's two dinosaurs at walkthrough frames 0, 2100 and 4899 (a large phase, where a sine's
@@ -71,6 +124,77 @@ TEST_F(GlSceneDeformerTest, PosesTheVertexBufferAsTheCpuDeformerPosesTheMeshes) 
     // Measured on llvmpipe: positions 2.4e-7 off (extent 3.2), normals 4.3e-6.
     EXPECT_LE(position_error, 1e-5f * std::max(extent, 1.0f)) << "frame " << frame;
     EXPECT_LE(normal_error, 1e-3f) << "frame " << frame;
+  }
+}
+
+// Every mesh in the same two dispatches: each deforming mesh posed as the CPU poses it, whatever
+// its share of the dispatches, and the static meshes between them untouched.
+TEST_F(GlSceneDeformerTest, PosesEveryMeshOfAThreeMeshSceneAsTheCpuDeformer) {
+  const Scene scene = three_deforming_meshes();
+  const SceneDeformers deformers(scene);
+  ASSERT_EQ(deformers.meshes(), (std::vector<std::uint32_t>{1, 3, 4}));
+  GpuScene gpu(scene);
+  const std::vector<GpuVertex> rest = read_vertices(gpu);
+  GlSceneDeformer deformer(deformers, gpu);
+
+  for (const int frame : {0, 7, 2100}) {
+    Scene posed = scene;
+    SceneDeformers(posed).apply(posed, frame);
+    deformer.apply(frame);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<GpuVertex> vertices = read_vertices(gpu);
+    for (std::uint32_t m = 0; m < scene.meshes.size(); ++m) {
+      const GpuMeshRange& range = gpu.mesh_ranges()[m];
+      ASSERT_EQ(range.vertex_count, scene.meshes[m].vertex_count());
+      const bool deforms = scene.meshes[m].deformable;
+      float position_error = 0.0f, normal_error = 0.0f;
+      int moved = 0;
+      for (std::uint32_t i = 0; i < range.vertex_count; ++i) {
+        const GpuVertex& got = vertices[range.base_vertex + i];
+        const GpuVertex& before = rest[range.base_vertex + i];
+        EXPECT_EQ(got.position_u.w, before.position_u.w) << "u of mesh " << m << " vertex " << i;
+        EXPECT_EQ(got.normal_v.w, before.normal_v.w) << "v of mesh " << m << " vertex " << i;
+        if (!deforms) {
+          ASSERT_EQ(vec3(got.position_u), vec3(before.position_u)) << "mesh " << m << " does not deform";
+          ASSERT_EQ(vec3(got.normal_v), vec3(before.normal_v)) << "mesh " << m << " does not deform";
+          continue;
+        }
+        position_error = std::max(position_error, glm::length(vec3(got.position_u) - posed.meshes[m].positions[i]));
+        normal_error = std::max(normal_error, glm::length(vec3(got.normal_v) - posed.meshes[m].normals[i]));
+        moved += vec3(got.position_u) != vec3(before.position_u);
+      }
+      if (!deforms) continue;
+      // The atrium test's bounds, 1e-5 of the extent (under 6 here) for the positions.
+      EXPECT_LE(position_error, 6e-5f) << "mesh " << m << ", frame " << frame;
+      EXPECT_LE(normal_error, 1e-3f) << "mesh " << m << ", frame " << frame;
+      EXPECT_GT(moved, static_cast<int>(range.vertex_count) / 2) << "mesh " << m << ", frame " << frame;
+    }
+  }
+}
+
+// What gpu_deformation.cpp copies into the gl backend's positions: at each mesh's offset in the
+// shared posed buffer, exactly the positions the normals stage wrote into that mesh's vertices.
+TEST_F(GlSceneDeformerTest, GivesEachMeshsPosedPositionsAtItsOffset) {
+  const Scene scene = three_deforming_meshes();
+  const SceneDeformers deformers(scene);
+  GpuScene gpu(scene);
+  GlSceneDeformer deformer(deformers, gpu);
+  deformer.apply(2100);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::vector<GpuVertex> vertices = read_vertices(gpu);
+  GLuint buffer = 0;
+  for (std::size_t k = 0; k < deformer.meshes().size(); ++k) {
+    const GlSceneDeformer::PosedRange posed = deformer.posed_positions(k);
+    if (k == 0) buffer = posed.buffer;
+    EXPECT_EQ(posed.buffer, buffer) << "one buffer for every mesh";
+    ASSERT_EQ(posed.offset_bytes % static_cast<GLintptr>(sizeof(vec4)), 0) << "mesh " << k;
+    const GpuMeshRange& range = gpu.mesh_ranges()[deformer.meshes()[k]];
+    const std::vector<vec4> positions = testing::read_buffer<vec4>(
+        posed.buffer, static_cast<std::size_t>(posed.offset_bytes) / sizeof(vec4), range.vertex_count);
+    for (std::uint32_t i = 0; i < range.vertex_count; ++i) {
+      ASSERT_EQ(vec3(positions[i]), vec3(vertices[range.base_vertex + i].position_u)) << "mesh " << k << " vertex " << i;
+      ASSERT_EQ(positions[i].w, 0.0f) << "mesh " << k << " vertex " << i;
+    }
   }
 }
 
