@@ -2,7 +2,6 @@
 
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
-#include "render/compute_dispatch.h"
 #include "render/frame_constants.h"
 #include "render/reflection_texture_check.h"
 #include "render/render_targets.h"
@@ -10,10 +9,19 @@
 #include <algorithm>
 
 namespace glint::render {
+namespace {
+
+// Dispatch 1 builds levels 0..kTileLevel (depth_pyramid_tiles.comp.glsl's kMaxTileLevel): with the
+// two G-buffer inputs, that is the 8 image units GL guarantees a compute shader (and the tail's
+// array of levels is that size too).
+constexpr int kTileLevel = 5;
+constexpr int kTailImageUnits = 8;
+
+}  // namespace
 
 DepthPyramidPass::DepthPyramidPass(int width, int height)
-    : base_(ShaderProgram::from_embedded({"depth_pyramid_base.comp.glsl"})),
-      reduce_(ShaderProgram::from_embedded({"depth_pyramid_reduce.comp.glsl"})) {
+    : tiles_(ShaderProgram::from_embedded({"depth_pyramid_tiles.comp.glsl"})),
+      tail_(ShaderProgram::from_embedded({"depth_pyramid_tail.comp.glsl"})) {
   resize(width, height);
 }
 
@@ -45,16 +53,28 @@ void DepthPyramidPass::run(const DepthPyramidInputs& inputs) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, inputs.frame_constants);
   glBindImageTexture(0, inputs.world_position, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldPositionFormat);
   glBindImageTexture(1, inputs.world_normal, 0, GL_FALSE, 0, GL_READ_ONLY, kWorldNormalRoughnessFormat);
-  glBindImageTexture(2, pyramid_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, kDepthPyramidFormat);
-  base_.use();
-  dispatch_over_image(width_, height_);
+  // Units 2..7: levels 0..kTileLevel, those past the last level bound to it (and not written).
+  const int tile_level = std::min(kTileLevel, levels_ - 1);
+  for (int level = 0; level <= kTileLevel; ++level) {
+    glBindImageTexture(static_cast<GLuint>(2 + level), pyramid_.id(), std::min(level, levels_ - 1), GL_FALSE, 0,
+                       GL_WRITE_ONLY, kDepthPyramidFormat);
+  }
+  tiles_.set_uniform("tile_level", tile_level);
+  tiles_.use();
+  glDispatchCompute(static_cast<GLuint>(std::max(1, width_ >> tile_level)),
+                    static_cast<GLuint>(std::max(1, height_ >> tile_level)), 1);
 
-  reduce_.use();
-  for (int level = 1; level < levels_; ++level) {
+  // The tail: kTailImageUnits levels bound a dispatch, the first the level below those it builds.
+  // One dispatch for images up to 8191 pixels a side (13 levels).
+  tail_.use();
+  for (int first = tile_level + 1; first < levels_; first += kTailImageUnits - 1) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    glBindImageTexture(0, pyramid_.id(), level - 1, GL_FALSE, 0, GL_READ_ONLY, kDepthPyramidFormat);
-    glBindImageTexture(1, pyramid_.id(), level, GL_FALSE, 0, GL_WRITE_ONLY, kDepthPyramidFormat);
-    dispatch_over_image(std::max(1, width_ >> level), std::max(1, height_ >> level));
+    for (int unit = 0; unit < kTailImageUnits; ++unit) {
+      glBindImageTexture(static_cast<GLuint>(unit), pyramid_.id(), std::min(first - 1 + unit, levels_ - 1), GL_FALSE,
+                         0, GL_READ_WRITE, kDepthPyramidFormat);
+    }
+    tail_.set_uniform("level_count", std::min(kTailImageUnits - 1, levels_ - first));
+    glDispatchCompute(1, 1, 1);
   }
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   check_gl("depth pyramid");
