@@ -1,6 +1,6 @@
 // The surface a pixel sees, as a plane: through its view-space point with its view-space normal.
 // Needs include/frame_constants.glsl. Shared by the depth pyramid's level 0
-// (depth_pyramid_base.comp.glsl) and the SSR trace's pixel test (ssr.comp.glsl), so that the two
+// (include/depth_pyramid.glsl) and the SSR trace's pixel test (include/ssr_march.glsl), so that the two
 // agree on where a pixel's surface lies.
 
 // A plane seen edge-on would reach any depth; a pixel's surface is kept within this factor of its
