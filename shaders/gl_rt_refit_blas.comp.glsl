@@ -19,7 +19,7 @@ uniform uint job_count;         // > 0
 uniform uint invocation_count;  // the node counts summed
 
 void main() {
-  const uint invocation = refit_invocation();
+  const uint invocation = grid_invocation();
   if (invocation >= invocation_count) return;
   // The last job starting at or before this invocation: thousands of meshes take a dozen steps.
   uint low = 0u, high = job_count - 1u;

@@ -27,7 +27,7 @@ layout(std430, binding = 28) readonly restrict buffer RefitTransforms { mat4 ref
 uniform uint tlas_node_count;
 
 void main() {
-  const uint node = refit_invocation();
+  const uint node = grid_invocation();
   if (node >= tlas_node_count) return;
   const uint prim_count = refit_nodes[node].prim_count;
   if (prim_count == 0u) return;

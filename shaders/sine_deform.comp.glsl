@@ -53,11 +53,9 @@ uniform int stage;              // 0 pose, 1 normals
 uniform uint job_count;         // > 0
 uniform uint invocation_count;  // the stage's: the meshes' max(vertex_count, triangle_count) or vertex_count summed
 
-// Work groups of 64 in a grid of up to 65,535 x 65,535 groups (gl_scene_deformer.cpp, as
-// refit_invocation() in include/refit_climb.glsl), so no scene is too large for one dispatch.
-uint deform_invocation() {
-  return gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
-}
+// Work groups of 64 in a grid of up to 65,535 x 65,535 groups (gl_scene_deformer.cpp), so no scene
+// is too large for one dispatch: main() takes its index from grid_invocation().
+#include "include/grid_invocation.glsl"
 
 // The last job whose first invocation in this stage is at or before `invocation`: thousands of
 // meshes take a dozen steps.
@@ -82,7 +80,7 @@ vec3 posed_position(vec3 rest_position, DeformJob job, float phase) {
 }
 
 void main() {
-  const uint invocation = deform_invocation();
+  const uint invocation = grid_invocation();
   if (invocation >= invocation_count) return;
   const DeformJob job = jobs[job_of(invocation)];
   if (stage == 0) {

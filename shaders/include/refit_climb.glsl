@@ -24,10 +24,9 @@ layout(std430, binding = 26) coherent restrict buffer RefitLinks { uvec2 refit_l
 const uint kNoParent = 0xFFFFFFFFu;
 
 // One invocation per node of the dispatch's BVHs: work groups of 64, in a grid of up to 65,535 x
-// 65,535 groups (gl_refit.cpp), so that no scene is too large for one dispatch.
-uint refit_invocation() {
-  return gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x) + gl_GlobalInvocationID.x;
-}
+// 65,535 groups (gl_refit.cpp), so that no scene is too large for one dispatch; the kernels take
+// their index from grid_invocation().
+#include "include/grid_invocation.glsl"
 
 // The box of no point (accel's empty Aabb): +inf below, -inf above, so min/max with any box gives it.
 void empty_box(out vec3 low, out vec3 high) {

@@ -1,27 +1,25 @@
 #include "gl_rt/gl_refit.h"
 
-#include "core/error.h"
+#include "gl/compute_grid.h"
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
 #include "gl_rt/gl_rt_bindings.h"
 
 #include <algorithm>
+#include <string_view>
 
 namespace glint::gl_rt {
 namespace {
 
-constexpr GLuint kGroupSize = 64;            // the kernels' local_size_x
-constexpr std::uint64_t kMaxGroups = 65535;  // per dimension, GL's guaranteed minimum
+constexpr GLuint kGroupSize = 64;  // the kernels' local_size_x
 
-// One invocation per item, in a grid of at most kMaxGroups x kMaxGroups work groups (refit_invocation()
-// in shaders/include/refit_climb.glsl unfolds it), so no scene is too large for one dispatch.
-void dispatch_over(std::uint64_t items) {
-  const std::uint64_t groups = (items + kGroupSize - 1) / kGroupSize;
-  if (groups == 0) return;
-  const std::uint64_t columns = std::min(groups, kMaxGroups);
-  const std::uint64_t rows = (groups + columns - 1) / columns;
-  if (rows > kMaxGroups) fail("rt gl: {} BVH nodes to refit in one dispatch, more than GL's grid holds", items);
-  glDispatchCompute(static_cast<GLuint>(columns), static_cast<GLuint>(rows), 1);
+// One invocation per item, in a grid of up to 65,535 x 65,535 work groups (gl/compute_grid.h;
+// grid_invocation() in shaders/include/grid_invocation.glsl unfolds it), so no scene is too large for
+// one dispatch. `what` names the dispatch in the error where it does not fit.
+void dispatch_over(std::uint64_t items, std::string_view what) {
+  const ComputeGrid grid = grid_of_work_groups(items, kGroupSize, what);
+  if (grid.columns == 0) return;
+  glDispatchCompute(grid.columns, grid.rows, 1);
 }
 
 }  // namespace
@@ -61,13 +59,13 @@ void GlRefit::refit(const GlStructureBuffers& structures, std::span<const std::u
     glProgramUniform1ui(blas_.id(), job_count_, static_cast<GLuint>(job_scratch_.size()));
     glProgramUniform1ui(blas_.id(), invocation_count_, static_cast<GLuint>(invocations));
     blas_.use();
-    dispatch_over(invocations);
+    dispatch_over(invocations, "rt gl: BLAS refit (one invocation per BVH node)");
     // The TLAS's leaves read the BLASes' root boxes.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   glProgramUniform1ui(tlas_.id(), tlas_node_count_, structures.tlas_node_count());
   tlas_.use();
-  dispatch_over(structures.tlas_node_count());
+  dispatch_over(structures.tlas_node_count(), "rt gl: TLAS refit (one invocation per BVH node)");
   // The traces read the nodes through their buffer texture (texelFetch) and the rest as storage; a
   // host update or a test writes or reads the buffers (buffer update).
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -24,8 +24,9 @@
 
 namespace glint::render {
 
-// Uniform-buffer binding points (apart from the storage bindings' numbers): 0 this block; 1 a
-// deforming mesh's constants in GlSceneDeformer's pass (gl_scene_deformer.cpp, kMeshConstantsBinding).
+// Uniform-buffer binding points (apart from the storage bindings' numbers): 0 this block, the only
+// uniform block glint binds. GlSceneDeformer's pass has none: each mesh's deformation is a DeformJob
+// in a storage buffer (binding 18) and the frame's time a plain uniform (sine_deform.comp.glsl).
 inline constexpr unsigned kFrameConstantsBinding = 0;
 
 struct FrameConstants {

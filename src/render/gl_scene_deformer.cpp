@@ -13,7 +13,6 @@ namespace {
 constexpr GLuint kRestBinding = 12, kIndexBinding = 13, kVertexOffsetBinding = 14, kVertexTriangleBinding = 15,
                  kPosedBinding = 16, kFaceNormalBinding = 17, kJobBinding = 18;
 constexpr GLuint kGroupSize = 64;                // local_size_x
-constexpr std::uint64_t kMaxGroups = 65535;      // per dimension, GL's guaranteed minimum
 constexpr std::uint64_t kMaxIndex = 0xFFFFFFFF;  // the shader indexes and counts invocations in uint
 
 // The shader's DeformJob (std430: twelve 4-byte scalars in order): one mesh's place in the dispatches
@@ -42,18 +41,6 @@ GlBuffer storage(const std::vector<T>& values) {
 }
 
 }  // namespace
-
-// As gl_refit.cpp's dispatch_over: one dimension alone stops at 65,535 groups (4.2 million vertices).
-GlSceneDeformer::Grid GlSceneDeformer::grid_over(std::uint64_t items) {
-  const std::uint64_t groups = (items + kGroupSize - 1) / kGroupSize;
-  if (groups == 0) return {};
-  const std::uint64_t columns = std::min(groups, kMaxGroups);
-  const std::uint64_t rows = (groups + columns - 1) / columns;
-  // Past 2^32 the shader's invocation index would wrap onto earlier invocations.
-  if (columns * rows * kGroupSize > kMaxIndex + 1)
-    fail("GL deformer: {} invocations in one dispatch, more than 32-bit indices count", items);
-  return {static_cast<GLuint>(columns), static_cast<GLuint>(rows)};
-}
 
 GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scene)
     : deformers_(deformers), scene_(scene), program_(ShaderProgram::from_embedded({"sine_deform.comp.glsl"})) {
@@ -109,8 +96,9 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
   job_count_ = static_cast<std::uint32_t>(jobs.size());
   pose_invocations_ = static_cast<std::uint32_t>(invocations);
   vertex_count_ = static_cast<std::uint32_t>(vertices);
-  pose_grid_ = grid_over(pose_invocations_);
-  normals_grid_ = grid_over(vertex_count_);
+  // Grids of up to 65,535 x 65,535 work groups (one dimension alone stops at 4.2 million vertices).
+  pose_grid_ = grid_of_work_groups(pose_invocations_, kGroupSize, "GL deformer: pose stage");
+  normals_grid_ = grid_of_work_groups(vertex_count_, kGroupSize, "GL deformer: normals stage");
   glProgramUniform1ui(program_.id(), program_.uniform_location("job_count"), job_count_);
   time_location_ = program_.uniform_location("time_seconds");
   stage_location_ = program_.uniform_location("stage");

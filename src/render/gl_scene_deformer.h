@@ -7,6 +7,7 @@
 // device positions are posed apart, by cuda::GpuSceneDeformer on the tracer's stream; neither side
 // waits for the other, so a deforming frame has no GL-CUDA hand-over of its own (one cost about
 // 0.33 ms of an H100 frame: docs/perf.md "Deforming without a hand-over").
+#include "gl/compute_grid.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "render/gpu_scene.h"
@@ -40,14 +41,6 @@ public:
   PosedRange posed_positions(std::size_t k) const { return {posed_.id(), posed_offsets_.at(k)}; }
 
 private:
-  // A dispatch's work groups: columns x rows (deform_invocation() in the shader unfolds them).
-  struct Grid {
-    GLuint columns = 0;
-    GLuint rows = 0;
-  };
-  // The grid of `items` invocations; glint::Error where it holds more than 32-bit indices count.
-  static Grid grid_over(std::uint64_t items);
-
   const SceneDeformers& deformers_;
   GpuScene& scene_;
   ShaderProgram program_;
@@ -57,7 +50,7 @@ private:
   std::vector<GLintptr> posed_offsets_;  // parallel to meshes()
   std::uint32_t job_count_ = 0;
   std::uint32_t pose_invocations_ = 0, vertex_count_ = 0;  // the two stages' invocation counts
-  Grid pose_grid_, normals_grid_;
+  ComputeGrid pose_grid_, normals_grid_;  // the two stages' work groups (gl/compute_grid.h)
   GLint time_location_ = -1, stage_location_ = -1, invocation_count_location_ = -1;
 };
 

@@ -1,15 +1,18 @@
 // GlSceneDeformer (--deform-on gpu's GL half) against the CPU deformer: the vertex buffer it poses
 // must hold SineDeformer's positions and normals, and leave every other mesh and the uvs alone; with
 // every mesh in the same two dispatches, each mesh must find its own job, and the posed positions
-// handed to gpu_deformation.cpp must sit at each mesh's offset.
+// handed to gpu_deformation.cpp must sit at each mesh's offset. Also the grid its dispatches (and the
+// gl backend's refit's) are sized by, gl/compute_grid.h.
 #include "render/gl_scene_deformer.h"
 
+#include "gl/compute_grid.h"
 #include "gl/gl_test_context.h"
 #include "gl/read_buffer.h"
 #include "raster_test_scene.h"
 #include "render/gpu_scene.h"
 #include "scene/presets.h"
 #include "scene/sine_deformer.h"
+#include "support/error_of.h"
 
 #include <gtest/gtest.h>
 
@@ -196,6 +199,36 @@ TEST_F(GlSceneDeformerTest, GivesEachMeshsPosedPositionsAtItsOffset) {
       ASSERT_EQ(positions[i].w, 0.0f) << "mesh " << k << " vertex " << i;
     }
   }
+}
+
+
+// grid_of_work_groups: columns first, up to 65,535, then rows; an error naming the dispatch past GL's
+// 65,535 x 65,535 groups or past 2^32 invocation indices (grid_invocation() counts in uint).
+TEST(GlSceneDeformerComputeGrid, FillsColumnsThenRowsAndRefusesWhatDoesNotFit) {
+  constexpr std::uint64_t kColumns = 65535;
+  EXPECT_EQ(grid_of_work_groups(0, 64, "test"), (ComputeGrid{0, 0}));
+  EXPECT_EQ(grid_of_work_groups(1, 64, "test"), (ComputeGrid{1, 1}));
+  EXPECT_EQ(grid_of_work_groups(64, 64, "test"), (ComputeGrid{1, 1}));
+  EXPECT_EQ(grid_of_work_groups(65, 64, "test"), (ComputeGrid{2, 1}));
+  EXPECT_EQ(grid_of_work_groups(kColumns * 64, 64, "test"), (ComputeGrid{65535, 1}));
+  EXPECT_EQ(grid_of_work_groups(kColumns * 64 + 1, 64, "test"), (ComputeGrid{65535, 2}));
+  // The most groups of 64 whose indices stay below 2^32: 1,024 full rows.
+  EXPECT_EQ(grid_of_work_groups(kColumns * 1024 * 64, 64, "test"), (ComputeGrid{65535, 1024}));
+  const std::string wraps =
+      testing::error_of([] { grid_of_work_groups(kColumns * 1024 * 64 + 1, 64, "GL deformer: pose stage"); });
+  EXPECT_NE(wraps.find("GL deformer: pose stage: "), std::string::npos) << wraps;
+  EXPECT_NE(wraps.find("2^32"), std::string::npos) << wraps;
+  EXPECT_NE(wraps.find("65535 x 1025"), std::string::npos) << wraps;
+  // In groups of 1 the full grid fits 32-bit indices; one more invocation does not fit the grid.
+  EXPECT_EQ(grid_of_work_groups(kColumns * kColumns, 1, "test"), (ComputeGrid{65535, 65535}));
+  const std::string too_many = testing::error_of([] { grid_of_work_groups(kColumns * kColumns + 1, 1, "rt gl: TLAS refit"); });
+  EXPECT_NE(too_many.find("rt gl: TLAS refit: 4294836226 invocations"), std::string::npos) << too_many;
+  EXPECT_NE(too_many.find("more than GL's 65,535 x 65,535 grid holds"), std::string::npos) << too_many;
+  const std::string beyond = testing::error_of([] { grid_of_work_groups(kColumns * kColumns * 64 + 1, 64, "test"); });
+  EXPECT_NE(beyond.find("more than GL's 65,535 x 65,535 grid holds"), std::string::npos) << beyond;
+  EXPECT_NE(testing::error_of([] { grid_of_work_groups(~std::uint64_t{0}, 64, "test"); }).find("grid holds"),
+            std::string::npos);
+  EXPECT_NE(testing::error_of([] { grid_of_work_groups(1, 0, "test"); }).find("work groups of 0"), std::string::npos);
 }
 
 }  // namespace
