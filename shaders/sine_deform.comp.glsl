@@ -5,7 +5,8 @@
 // scene/sine_deform_math.h and SineDeformer (CPU) and cuda/gpu_sine_deformer.cu (CUDA):
 //   stage 0, "pose", max(vertex_count, triangle_count) invocations per mesh: invocation i below
 //            vertex_count writes posed[i] = rest moved along displace_axis by amplitude *
-//            sin(frequency * rest[wave_axis] + phase), phase = speed * time_seconds; below
+//            sin(frequency * rest[wave_axis] + phase), phase = speed * time_seconds (and the same
+//            into the gl backend's positions, where GlSceneDeformer::write_positions_to set them); below
 //            triangle_count it writes triangle i's area-weighted normal, cross(b - a, c - a), posing
 //            the three corners itself with the same function, so a corner is bit for bit the
 //            posed[] value and the stage needs no pass of its own before it;
@@ -36,8 +37,9 @@ struct DeformJob {
   float amplitude;
   float frequency;
   float speed;
-  uint padding;
+  uint target_vertex;  // the mesh's first vertex in pose_target[]; kNoTarget: not written there
 };
+const uint kNoTarget = 0xFFFFFFFFu;
 
 layout(std430, binding = 1) buffer Vertices { GpuVertex vertices[]; };  // the scene's (kVertexBufferBinding)
 layout(std430, binding = 12) readonly buffer Rest { vec4 rest[]; };
@@ -47,6 +49,7 @@ layout(std430, binding = 15) readonly buffer VertexTriangles { uint vertex_trian
 layout(std430, binding = 16) buffer Posed { vec4 posed[]; };
 layout(std430, binding = 17) buffer FaceNormals { vec4 face_normals[]; };
 layout(std430, binding = 18) readonly buffer DeformJobs { DeformJob jobs[]; };  // by ascending first_invocation
+layout(std430, binding = 20) writeonly buffer PoseTarget { vec4 pose_target[]; };  // the gl backend's positions
 
 uniform float time_seconds;     // the frame's (SceneDeformers::time_at), the same for every mesh
 uniform int stage;              // 0 pose, 1 normals
@@ -88,7 +91,9 @@ void main() {
     precise float phase = job.speed * time_seconds;    // one rounded product, as the CPU's
     if (i < job.vertex_count) {
       const uint v = job.first_vertex + i;
-      posed[v] = vec4(posed_position(rest[v].xyz, job, phase), 0.0);
+      const vec4 position = vec4(posed_position(rest[v].xyz, job, phase), 0.0);
+      posed[v] = position;
+      if (job.target_vertex != kNoTarget) pose_target[job.target_vertex + i] = position;
     }
     if (i < job.triangle_count) {
       const uint t = job.first_triangle + i;

@@ -5,6 +5,7 @@
 #include "gl/gl_pass_scope.h"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace glint::render {
 namespace {
@@ -12,6 +13,10 @@ namespace {
 // shaders/sine_deform.comp.glsl's storage bindings (1 is the scene's vertex buffer, gpu_scene.h).
 constexpr GLuint kRestBinding = 12, kIndexBinding = 13, kVertexOffsetBinding = 14, kVertexTriangleBinding = 15,
                  kPosedBinding = 16, kFaceNormalBinding = 17, kJobBinding = 18;
+// write_positions_to()'s buffer: above the renderer's passes' bindings (0..19), below the gl
+// backend's (21..29), which a pass's dispatch leaves as they are.
+constexpr GLuint kTargetBinding = 20;
+constexpr std::uint32_t kNoTarget = 0xFFFFFFFF;  // DeformJob::target_vertex of a job not written out
 constexpr GLuint kGroupSize = 64;                // local_size_x
 constexpr std::uint64_t kMaxIndex = 0xFFFFFFFF;  // the shader indexes and counts invocations in uint
 
@@ -29,7 +34,7 @@ struct DeformJob {
   float amplitude = 0.0f;
   float frequency = 0.0f;
   float speed = 0.0f;
-  std::uint32_t padding = 0;
+  std::uint32_t target_vertex = kNoTarget;  // its first vertex in write_positions_to()'s buffer
 };
 static_assert(sizeof(DeformJob) == 48);
 
@@ -60,14 +65,15 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
     if (range.vertex_count != deformer.vertex_count())
       fail("GL deformer: mesh '{}' has {} vertices in the GPU scene but {} in its deformer", deformer.mesh_name(),
            range.vertex_count, deformer.vertex_count());
-    posed_offsets_.push_back(static_cast<GLintptr>(vertices * sizeof(vec4)));
     const std::uint64_t vertex_count = deformer.vertex_count(), triangle_count = deformer.indices().size() / 3;
-    if (vertex_count == 0) continue;  // no job: the search needs every job's first invocation distinct
+    // No job without vertices: the search needs every job's first invocation distinct.
+    job_of_mesh_.push_back(vertex_count == 0 ? -1 : static_cast<std::int32_t>(jobs.size()));
+    if (vertex_count == 0) continue;
     const SineDeform& parameters = deformer.parameters();
     jobs.push_back({static_cast<std::uint32_t>(invocations), static_cast<std::uint32_t>(vertices),
                     static_cast<std::uint32_t>(triangles), static_cast<std::uint32_t>(vertex_count),
                     static_cast<std::uint32_t>(triangle_count), range.base_vertex, parameters.displace_axis,
-                    parameters.wave_axis, parameters.amplitude, parameters.frequency, parameters.speed, 0});
+                    parameters.wave_axis, parameters.amplitude, parameters.frequency, parameters.speed, kNoTarget});
     for (const vec3& p : deformer.rest_positions()) rest.emplace_back(p, 0.0f);
     for (const std::uint32_t index : deformer.indices()) indices.push_back(static_cast<std::uint32_t>(vertices + index));
     // Each mesh's final offset is the next mesh's first: one closing entry after the loop.
@@ -92,7 +98,9 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
   vertex_triangles_ = storage(vertex_triangles);
   posed_ = create_buffer(std::max<std::uint64_t>(vertices, 1) * sizeof(vec4), nullptr);
   face_normals_ = create_buffer(std::max<std::uint64_t>(triangles, 1) * sizeof(vec4), nullptr);
-  jobs_ = storage(jobs);
+  jobs_ = jobs.empty() ? create_buffer(sizeof(DeformJob), nullptr, GL_DYNAMIC_STORAGE_BIT)
+                      : create_buffer(std::span<const DeformJob>(jobs), GL_DYNAMIC_STORAGE_BIT);
+  target_first_vertex_.assign(jobs.size(), kNoTarget);
   job_count_ = static_cast<std::uint32_t>(jobs.size());
   pose_invocations_ = static_cast<std::uint32_t>(invocations);
   vertex_count_ = static_cast<std::uint32_t>(vertices);
@@ -104,6 +112,21 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
   stage_location_ = program_.uniform_location("stage");
   invocation_count_location_ = program_.uniform_location("invocation_count");
   check_gl("GL deformer: set-up");
+}
+
+void GlSceneDeformer::write_positions_to(GLuint buffer, std::span<const std::uint32_t> first_vertex) {
+  if (first_vertex.size() != job_of_mesh_.size())
+    fail("GL deformer: {} first vertices for the positions' copies, one per deforming mesh ({}) expected",
+         first_vertex.size(), job_of_mesh_.size());
+  target_buffer_ = buffer;
+  for (std::size_t k = 0; k < first_vertex.size(); ++k) {
+    const std::int32_t job = job_of_mesh_[k];
+    if (job < 0 || target_first_vertex_[job] == first_vertex[k]) continue;
+    target_first_vertex_[job] = first_vertex[k];
+    glNamedBufferSubData(jobs_.id(), static_cast<GLintptr>(job * sizeof(DeformJob) + offsetof(DeformJob, target_vertex)),
+                         sizeof(std::uint32_t), &first_vertex[k]);
+  }
+  check_gl("GL deformer: positions' target");
 }
 
 void GlSceneDeformer::apply(int frame) {
@@ -119,6 +142,8 @@ void GlSceneDeformer::apply(int frame) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPosedBinding, posed_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFaceNormalBinding, face_normals_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kJobBinding, jobs_.id());
+    // Without a target no job writes there; something is bound all the same.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTargetBinding, target_buffer_ != 0 ? target_buffer_ : posed_.id());
     // Pose: every vertex's position and every triangle's normal.
     glProgramUniform1i(program_.id(), stage_location_, 0);
     glProgramUniform1ui(program_.id(), invocation_count_location_, pose_invocations_);

@@ -14,6 +14,7 @@
 #include "scene/sine_deformer.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace glint::render {
@@ -31,14 +32,14 @@ public:
 
   // The scene meshes it poses, ascending (SceneDeformers::meshes).
   const std::vector<std::uint32_t>& meshes() const { return deformers_.meshes(); }
-  // Where apply() posed meshes()[k]'s object-space positions: vertex_count vec4s (w 0) from
-  // offset_bytes in a buffer that holds every mesh's, written by a shader (a copy from it needs
-  // GL_BUFFER_UPDATE_BARRIER_BIT first).
-  struct PosedRange {
-    GLuint buffer = 0;
-    GLintptr offset_bytes = 0;
-  };
-  PosedRange posed_positions(std::size_t k) const { return {posed_.id(), posed_offsets_.at(k)}; }
+
+  // Makes every later apply() also write meshes()[k]'s object-space positions (vec4s, w 0) into
+  // `buffer` from vec4 `first_vertex[k]` on, in its pose dispatch: the gl backend's positions
+  // (rt::GlTracing::gl_positions), which its GPU refit then reads after apply()'s barrier, with no
+  // copy between (a copy and its barrier took 0.04 ms of an H100 frame: docs/perf.md "Twelfth
+  // round"). Cheap when nothing changed, so a caller may pass the tracer's current layout every
+  // frame. glint::Error unless there is one first vertex per mesh.
+  void write_positions_to(GLuint buffer, std::span<const std::uint32_t> first_vertex);
 
 private:
   const SceneDeformers& deformers_;
@@ -47,7 +48,11 @@ private:
   // Every mesh's arrays, one after the other (the shader's bindings 12 to 17), and one DeformJob
   // per mesh with vertices (binding 18).
   GlBuffer rest_, indices_, vertex_offsets_, vertex_triangles_, posed_, face_normals_, jobs_;
-  std::vector<GLintptr> posed_offsets_;  // parallel to meshes()
+  // Per mesh of meshes() its job's index (-1: no vertices, no job), and per job the first vertex
+  // of its write_positions_to() target as the jobs buffer holds it.
+  std::vector<std::int32_t> job_of_mesh_;
+  std::vector<std::uint32_t> target_first_vertex_;
+  GLuint target_buffer_ = 0;  // write_positions_to()'s buffer; 0: none
   std::uint32_t job_count_ = 0;
   std::uint32_t pose_invocations_ = 0, vertex_count_ = 0;  // the two stages' invocation counts
   ComputeGrid pose_grid_, normals_grid_;  // the two stages' work groups (gl/compute_grid.h)

@@ -36,24 +36,26 @@ GpuDeformation::GpuDeformation(const SceneDeformers& deformers, FramePipeline& p
 GpuDeformation::~GpuDeformation() = default;
 
 std::vector<std::uint32_t> GpuDeformation::apply(int frame) {
+  if (gl_tracer_) target_tracer_positions();
   gl_.apply(frame);
   if (cuda_) return cuda_->apply(frame);
-  if (gl_tracer_) copy_poses_to_tracer();
   return gl_.meshes();
 }
 
-void GpuDeformation::copy_poses_to_tracer() {
-  // The deformer's shader wrote the poses; a copy reads them after this barrier.
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  for (std::size_t k = 0; k < gl_.meshes().size(); ++k) {
-    // Asked every frame: a host update may have laid the tracer's buffers out anew. Both sides hold
-    // vec4 positions, so the copy is one range.
-    const rt::GlTracing::VertexRange range = gl_tracer_->gl_positions(gl_.meshes()[k]);
-    if (range.vertex_count == 0) continue;
-    const GlSceneDeformer::PosedRange posed = gl_.posed_positions(k);
-    glCopyNamedBufferSubData(posed.buffer, range.buffer, posed.offset_bytes, static_cast<GLintptr>(range.offset_bytes),
-                             static_cast<GLsizeiptr>(std::uint64_t{range.vertex_count} * sizeof(vec4)));
+void GpuDeformation::target_tracer_positions() {
+  // Asked every frame: a host update may have laid the tracer's buffers out anew. Both sides hold
+  // vec4 positions, every mesh's in one buffer.
+  GLuint buffer = 0;
+  tracer_first_vertex_.clear();
+  for (const std::uint32_t mesh : gl_.meshes()) {
+    const rt::GlTracing::VertexRange range = gl_tracer_->gl_positions(mesh);
+    if ((buffer != 0 && range.buffer != buffer) || range.offset_bytes % sizeof(vec4) != 0)
+      fail("GPU deformation: the gl backend's positions of mesh {} are not vec4s in the one buffer of the others'",
+           mesh);
+    buffer = range.buffer;
+    tracer_first_vertex_.push_back(static_cast<std::uint32_t>(range.offset_bytes / sizeof(vec4)));
   }
+  gl_.write_positions_to(buffer, tracer_first_vertex_);
 }
 
 std::optional<std::uint64_t> GpuDeformation::last_cuda_apply() const {

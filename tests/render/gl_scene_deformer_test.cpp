@@ -175,32 +175,53 @@ TEST_F(GlSceneDeformerTest, PosesEveryMeshOfAThreeMeshSceneAsTheCpuDeformer) {
   }
 }
 
-// What gpu_deformation.cpp copies into the gl backend's positions: at each mesh's offset in the
-// shared posed buffer, exactly the positions the normals stage wrote into that mesh's vertices.
-TEST_F(GlSceneDeformerTest, GivesEachMeshsPosedPositionsAtItsOffset) {
+// What the gl backend's GPU refit reads (gpu_deformation.cpp): with write_positions_to, each mesh's
+// positions at its first vertex of the target buffer, exactly the positions the normals stage wrote
+// into that mesh's vertices (w 0), and nothing else of the buffer touched; a new layout moves them.
+TEST_F(GlSceneDeformerTest, WritesEachMeshsPositionsWhereItIsTold) {
   const Scene scene = three_deforming_meshes();
   const SceneDeformers deformers(scene);
   GpuScene gpu(scene);
   GlSceneDeformer deformer(deformers, gpu);
-  deformer.apply(2100);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  const std::vector<GpuVertex> vertices = read_vertices(gpu);
-  GLuint buffer = 0;
-  for (std::size_t k = 0; k < deformer.meshes().size(); ++k) {
-    const GlSceneDeformer::PosedRange posed = deformer.posed_positions(k);
-    if (k == 0) buffer = posed.buffer;
-    EXPECT_EQ(posed.buffer, buffer) << "one buffer for every mesh";
-    ASSERT_EQ(posed.offset_bytes % static_cast<GLintptr>(sizeof(vec4)), 0) << "mesh " << k;
-    const GpuMeshRange& range = gpu.mesh_ranges()[deformer.meshes()[k]];
-    const std::vector<vec4> positions = testing::read_buffer<vec4>(
-        posed.buffer, static_cast<std::size_t>(posed.offset_bytes) / sizeof(vec4), range.vertex_count);
-    for (std::uint32_t i = 0; i < range.vertex_count; ++i) {
-      ASSERT_EQ(vec3(positions[i]), vec3(vertices[range.base_vertex + i].position_u)) << "mesh " << k << " vertex " << i;
-      ASSERT_EQ(positions[i].w, 0.0f) << "mesh " << k << " vertex " << i;
+  std::uint32_t total = 0;
+  for (const std::uint32_t mesh : deformer.meshes()) total += gpu.mesh_ranges()[mesh].vertex_count;
+  const vec4 sentinel(-7.0f, 3.5f, 1e9f, 42.0f);
+  const std::vector<vec4> filler(total + 64, sentinel);
+  const GlBuffer target = create_buffer(std::span<const vec4>(filler), GL_DYNAMIC_STORAGE_BIT);
+  // Meshes in reverse order with gaps between them, then packed in order from vertex 0.
+  for (const bool reversed : {true, false}) {
+    std::vector<std::uint32_t> first(deformer.meshes().size());
+    std::uint32_t next = reversed ? 5u : 0u;
+    for (std::size_t n = 0; n < first.size(); ++n) {
+      const std::size_t k = reversed ? first.size() - 1 - n : n;
+      first[k] = next;
+      next += gpu.mesh_ranges()[deformer.meshes()[k]].vertex_count + (reversed ? 7u : 0u);
+    }
+    ASSERT_LE(next, filler.size());
+    glNamedBufferSubData(target.id(), 0, static_cast<GLsizeiptr>(filler.size() * sizeof(vec4)), filler.data());
+    deformer.write_positions_to(target.id(), first);
+    deformer.apply(reversed ? 2100 : 7);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::vector<GpuVertex> vertices = read_vertices(gpu);
+    const std::vector<vec4> written = testing::read_buffer<vec4>(target.id(), 0, filler.size());
+    std::vector<bool> covered(filler.size(), false);
+    for (std::size_t k = 0; k < first.size(); ++k) {
+      const GpuMeshRange& range = gpu.mesh_ranges()[deformer.meshes()[k]];
+      for (std::uint32_t i = 0; i < range.vertex_count; ++i) {
+        covered[first[k] + i] = true;
+        ASSERT_EQ(vec3(written[first[k] + i]), vec3(vertices[range.base_vertex + i].position_u)) << "mesh " << k << " vertex " << i;
+        ASSERT_EQ(written[first[k] + i].w, 0.0f) << "mesh " << k << " vertex " << i;
+      }
+    }
+    for (std::size_t v = 0; v < filler.size(); ++v) {
+      if (covered[v]) continue;
+      ASSERT_EQ(written[v], sentinel) << "vertex " << v << " of the target is no mesh's";
     }
   }
+  const std::vector<std::uint32_t> too_few(deformer.meshes().size() - 1, 0u);
+  EXPECT_NE(testing::error_of([&] { deformer.write_positions_to(target.id(), too_few); }).find("one per deforming mesh"),
+            std::string::npos);
 }
-
 
 // grid_of_work_groups: columns first, up to 65,535, then rows; an error naming the dispatch past GL's
 // 65,535 x 65,535 groups or past 2^32 invocation indices (grid_invocation() counts in uint).
