@@ -4,6 +4,10 @@
 // parent links; at each node the first of the two children's invocations to arrive stops, and the
 // second (its sibling's subtree is done) writes the node's box from both children's, sets the node's
 // counter back to 0 for the next refit (nothing else arrives there in this one) and goes on.
+// A climb is a chain of dependent round trips to L2, one chain per level, so each level waits on as
+// few as it can: the climbing invocation carries its own child's box and reads only the sibling's,
+// and reads the fixed topology (the node's children, its parent) before its arrival, not after
+// (docs/perf.md "Twelfth round").
 // The nodes and links take the trace's per-call bindings 25 and 26 (gl_rt_bindings.h): a refit is
 // no trace. `coherent`: a box one invocation writes is read by another in the same dispatch, past
 // the invocations' incoherent caches.
@@ -38,15 +42,26 @@ void empty_box(out vec3 low, out vec3 high) {
 void refit_from_leaf(uint base, uint leaf, vec3 low, vec3 high) {
   refit_nodes[base + leaf].bounds_min = low;
   refit_nodes[base + leaf].bounds_max = high;
-  for (uint node = refit_links[base + leaf].x; node != kNoParent; node = refit_links[base + node].x) {
+  uint child = leaf;
+  for (uint node = refit_links[base + leaf].x; node != kNoParent;) {
+    const uint left = refit_nodes[base + node].first;
+    const uint parent = refit_links[base + node].x;
     // This invocation's boxes are visible before its arrival is.
     memoryBarrierBuffer();
     if (atomicAdd(refit_links[base + node].y, 1u) == 0u) return;  // the sibling's subtree is still going
     refit_links[base + node].y = 0u;
-    // The sibling's box is read after the arrival that says it is written.
+    // The sibling's box is read after the arrival that says it is written. The left child's box
+    // comes first in min and max, as before and as accel::refit merges (min and max of a 0 and a -0
+    // may depend on the order).
     memoryBarrierBuffer();
-    const uint left = base + refit_nodes[base + node].first;
-    refit_nodes[base + node].bounds_min = min(refit_nodes[left].bounds_min, refit_nodes[left + 1u].bounds_min);
-    refit_nodes[base + node].bounds_max = max(refit_nodes[left].bounds_max, refit_nodes[left + 1u].bounds_max);
+    const bool from_left = child == left;
+    const uint sibling = base + (from_left ? left + 1u : left);
+    const vec3 sibling_low = refit_nodes[sibling].bounds_min, sibling_high = refit_nodes[sibling].bounds_max;
+    low = from_left ? min(low, sibling_low) : min(sibling_low, low);
+    high = from_left ? max(high, sibling_high) : max(sibling_high, high);
+    refit_nodes[base + node].bounds_min = low;
+    refit_nodes[base + node].bounds_max = high;
+    child = node;
+    node = parent;
   }
 }

@@ -38,6 +38,9 @@ struct RefitBatch {
 // refit (nothing else arrives there in this one) and goes on. __threadfence() before the arrival
 // publishes this thread's boxes; the one after it orders the sibling's box, read from L2, after the
 // arrival. Only the bounds are written: the topology (first, prim_count) is read with plain loads.
+// A climb is a chain of dependent round trips to L2, so each level waits on as few as it can: the
+// thread carries its own child's box and reads only the sibling's, and reads the fixed topology (the
+// node's children, its parent) before its arrival, not after (docs/perf.md "Twelfth round").
 __global__ void refit_kernel(const RefitBatch batch) {
   const uint32_t thread = blockIdx.x * blockDim.x + threadIdx.x;
   if (thread >= batch.threads) return;
@@ -56,15 +59,21 @@ __global__ void refit_kernel(const RefitBatch batch) {
   }
   nodes[leaf].bounds_min = box.min;
   nodes[leaf].bounds_max = box.max;
-  for (uint32_t node = job.parents[leaf]; node != kNoParent; node = job.parents[node]) {
+  uint32_t child = leaf;
+  for (uint32_t node = job.parents[leaf]; node != kNoParent;) {
+    const uint32_t left = nodes[node].first, parent = job.parents[node];
     __threadfence();
     if (atomicAdd(&job.arrivals[node], 1u) == 0) return;
     job.arrivals[node] = 0;
     __threadfence();
-    const uint32_t left = nodes[node].first;
-    box = detail::merged(detail::load_node_box_from_l2(&nodes[left]), detail::load_node_box_from_l2(&nodes[left + 1]));
+    // The left child's box first, as accel::refit merges (min and max of 0 and -0 may depend on it).
+    const bool from_left = child == left;
+    const Aabb sibling = detail::load_node_box_from_l2(&nodes[from_left ? left + 1 : left]);
+    box = from_left ? detail::merged(box, sibling) : detail::merged(sibling, box);
     nodes[node].bounds_min = box.min;
     nodes[node].bounds_max = box.max;
+    child = node;
+    node = parent;
   }
 }
 
