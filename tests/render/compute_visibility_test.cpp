@@ -537,7 +537,12 @@ TEST_F(ComputeVisibility, OneRoundOf64BitAtomicsEqualsTwoRounds) {
       EXPECT_TRUE(one.ids == two.ids) << "capacity " << capacity;
       EXPECT_TRUE(one.depth.pixels == two.depth.pixels) << "capacity " << capacity;
       EXPECT_EQ(one.stats.large_entries, two.stats.large_entries);
-      EXPECT_EQ(one.stats.overflowed, two.stats.overflowed);
+      // With full lists, which triangles fall back (and so how many) depends on the order in which
+      // their work groups reserve entries and chunk records; whether any does, and the images, do not.
+      EXPECT_EQ(one.stats.overflowed > 0, two.stats.overflowed > 0) << "capacity " << capacity;
+      if (capacity == 0) {
+        EXPECT_EQ(one.stats.overflowed, 0u);
+      }
     }
   }
 }
