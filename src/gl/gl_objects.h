@@ -73,6 +73,15 @@ GlBuffer create_buffer(std::span<const T> data, GLbitfield flags = 0) {
   return create_buffer(data.size_bytes(), data.data(), flags);
 }
 
+// A buffer of `data`, or of one value-initialised T where `data` is empty: GL refuses empty storage,
+// and a pass over nothing still binds a buffer.
+template <typename T>
+GlBuffer create_nonempty_buffer(std::span<const T> data, GLbitfield flags = 0) {
+  if (!data.empty()) return create_buffer(data, flags);
+  const T filler{};
+  return create_buffer(sizeof(T), &filler, flags);
+}
+
 // A 2D texture with immutable storage for `levels` mip levels (glTextureStorage2D).
 inline GlTexture create_texture_2d(GLenum internal_format, int width, int height, int levels = 1) {
   if (width <= 0 || height <= 0 || levels <= 0)

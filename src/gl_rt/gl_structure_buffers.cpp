@@ -19,13 +19,11 @@ uint32_t checked_u32(size_t value, const char* what) {
   return static_cast<uint32_t>(value);
 }
 
-// An immutable buffer the host may overwrite in parts (glNamedBufferSubData); never empty, which GL
-// refuses, so a scene without a region still binds something.
+// An immutable buffer the host may overwrite in parts (glNamedBufferSubData); never empty, so a scene
+// without a region still binds something.
 template <typename T>
 GlBuffer make_storage(const std::vector<T>& data) {
-  const T filler{};
-  return data.empty() ? create_buffer(sizeof(T), &filler, GL_DYNAMIC_STORAGE_BIT)
-                      : create_buffer(data.size() * sizeof(T), data.data(), GL_DYNAMIC_STORAGE_BIT);
+  return create_nonempty_buffer(std::span<const T>(data), GL_DYNAMIC_STORAGE_BIT);
 }
 
 template <typename T>

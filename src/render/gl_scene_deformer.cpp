@@ -38,13 +38,6 @@ struct DeformJob {
 };
 static_assert(sizeof(DeformJob) == 48);
 
-// A storage buffer of at least one element (GL refuses empty storage).
-template <typename T>
-GlBuffer storage(const std::vector<T>& values) {
-  if (values.empty()) return create_buffer(sizeof(T), nullptr);
-  return create_buffer(std::span<const T>(values));
-}
-
 }  // namespace
 
 GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scene)
@@ -92,14 +85,13 @@ GlSceneDeformer::GlSceneDeformer(const SceneDeformers& deformers, GpuScene& scen
     fail("GL deformer: the deformable meshes have {} vertices, {} triangle corners and {} pose invocations, more "
          "than 32-bit indices count",
          vertices, corners, invocations);
-  rest_ = storage(rest);
-  indices_ = storage(indices);
-  vertex_offsets_ = storage(vertex_offsets);
-  vertex_triangles_ = storage(vertex_triangles);
+  rest_ = create_nonempty_buffer(std::span<const vec4>(rest));
+  indices_ = create_nonempty_buffer(std::span<const std::uint32_t>(indices));
+  vertex_offsets_ = create_nonempty_buffer(std::span<const std::uint32_t>(vertex_offsets));
+  vertex_triangles_ = create_nonempty_buffer(std::span<const std::uint32_t>(vertex_triangles));
   posed_ = create_buffer(std::max<std::uint64_t>(vertices, 1) * sizeof(vec4), nullptr);
   face_normals_ = create_buffer(std::max<std::uint64_t>(triangles, 1) * sizeof(vec4), nullptr);
-  jobs_ = jobs.empty() ? create_buffer(sizeof(DeformJob), nullptr, GL_DYNAMIC_STORAGE_BIT)
-                      : create_buffer(std::span<const DeformJob>(jobs), GL_DYNAMIC_STORAGE_BIT);
+  jobs_ = create_nonempty_buffer(std::span<const DeformJob>(jobs), GL_DYNAMIC_STORAGE_BIT);
   target_first_vertex_.assign(jobs.size(), kNoTarget);
   job_count_ = static_cast<std::uint32_t>(jobs.size());
   pose_invocations_ = static_cast<std::uint32_t>(invocations);
