@@ -364,9 +364,11 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command
       ->add_option("--primary", options.primary,
-                   "With --gbuffer visibility, how the triangle ids are made: raster (the id draw), rt (a camera "
-                   "ray per pixel through the --backend tracer) or compute (a compute-shader rasteriser); "
-                   "experiments (docs/render.md)")
+                   "With --gbuffer visibility, how the triangle ids are made: raster (the id draw), compute (a "
+                   "compute-shader rasteriser: nearly the same ids, much faster where few SMs run fragment "
+                   "shaders, as on an H100), auto (compute where a GPU timed it on the first frame at least 1.25x "
+                   "faster than raster, else raster; untimed raster on software GL; run.json says which) or rt "
+                   "(a camera ray per pixel through the --backend tracer; an experiment); docs/render.md")
       ->check(CLI::IsMember(render::kPrimaryVisibilityNames.names()))
       ->capture_default_str();
   command
@@ -502,6 +504,7 @@ int run_render_command(const RenderOptions& options) {
   std::optional<rt::RayTracerStats> tracer_stats;
   if (pipeline.ray_tracer() != nullptr) tracer_stats = pipeline.ray_tracer()->stats();
   if (interruption_requested()) record.mark_interrupted(interruption_signal_name());
+  record.set_primary_visibility(pipeline.raster());
   record.write(out.path() / "run.json", run_watch.elapsed_ms(), tracer_stats);
   if (interruption_requested()) {
     log_warning("render: interrupted by {} after {} of {} frames; {} holds them, their timings and run.json",

@@ -56,9 +56,10 @@ struct RenderOptions {
   int shadow_map_size = 1024;
   std::string shadow_cube_draw = "per-face";
   // The defaults of gbuffer and shadows are the fastest methods measured on the H100 and on llvmpipe
-  // (docs/perf.md, "GPU-first frame"); glint bench keeps the paper's (raster, cube).
+  // (docs/perf.md, "GPU-first frame"); glint bench keeps the paper's (raster, cube). primary's differs
+  // by machine, so auto times both candidates on the first frame (render/primary_visibility_choice.h).
   std::string gbuffer = "visibility";  // raster|visibility (render::GBufferMethod)
-  std::string primary = "raster";  // raster|rt (render::PrimaryVisibility; rt only with visibility)
+  std::string primary = "auto";    // raster|rt|compute|auto (render::PrimaryVisibility; used with visibility)
   std::string shadows = "rt";      // cube|rt|hybrid (render::ShadowMethod)
   int ssr_max_steps = 256;
   float ssr_thickness = 0.01f;  // fraction of the view depth (SsrSettings::thickness)

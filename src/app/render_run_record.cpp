@@ -244,6 +244,23 @@ std::string recorded_structure(const render::RayTracingSettings& settings) {
 
 }  // namespace
 
+nlohmann::json primary_visibility_record(const render::RasterPipeline& raster) {
+  if (raster.settings().gbuffer != render::GBufferMethod::visibility) return nullptr;
+  nlohmann::json record = {{"method", render::primary_visibility_name(raster.primary_visibility())}};
+  if (const std::optional<render::PrimaryVisibilityChoice>& choice = raster.primary_visibility_choice()) {
+    if (choice->raster_ms && choice->compute_ms) {
+      record["chosen_by"] = fmt::format("--primary auto: both timed on the first frame; compute kept only when {}x "
+                                        "faster",
+                                        render::kComputeRasterMargin);
+      record["raster_ms"] = *choice->raster_ms;
+      record["compute_ms"] = *choice->compute_ms;
+    } else {
+      record["chosen_by"] = "--primary auto on a software GL renderer: the id draw, untimed";
+    }
+  }
+  return record;
+}
+
 void RenderRunRecord::set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats) {
   run_["ray_tracer"] = {{"backend", settings.backend},
                         {"accel", recorded_structure(settings)},

@@ -7,6 +7,7 @@
 #include "core/csv_writer.h"
 #include "gl/egl_context.h"
 #include "gl/gpu_timer.h"
+#include "render/raster_pipeline.h"
 #include "render/ray_traced_reflections.h"
 #include "render/ssr_pass.h"
 #include "rt/ray_tracer.h"
@@ -21,6 +22,11 @@
 #include <vector>
 
 namespace glint {
+
+// run.json's "primary_visibility": null with the raster G-buffer (no ids); else {"method": raster |
+// compute | rt}, and with --primary auto also "chosen_by" and, where they were timed (not on a
+// software renderer), both methods' "raster_ms" and "compute_ms" ({"method": "auto"} before any frame).
+nlohmann::json primary_visibility_record(const render::RasterPipeline& raster);
 
 class RenderRunRecord {
 public:
@@ -46,6 +52,12 @@ public:
 
   // A top-level entry of run.json (a run shared over MPI ranks records them under "distribution").
   void add_entry(const std::string& key, const nlohmann::json& value) { run_[key] = value; }
+
+  // How the visibility G-buffer's ids were made, as primary_visibility_record says (run.json
+  // "primary_visibility"); called after the frames, since --primary auto chooses on the first.
+  void set_primary_visibility(const render::RasterPipeline& raster) {
+    run_["primary_visibility"] = primary_visibility_record(raster);
+  }
 
   // The ray tracer's backend, structure, policy and build statistics, for run.json.
   void set_ray_tracer(const render::RayTracingSettings& settings, const rt::RayTracerStats& stats);

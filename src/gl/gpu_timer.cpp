@@ -1,6 +1,7 @@
 #include "gl/gpu_timer.h"
 
 #include "core/error.h"
+#include "gl/gl_renderer.h"
 #include "gl/scope_profiler.h"
 
 #include <algorithm>
@@ -9,9 +10,7 @@
 namespace glint {
 
 PassTimingMethod pass_timing_for_renderer(std::string_view gl_renderer) {
-  const bool software = gl_renderer.find("llvmpipe") != std::string_view::npos ||
-                        gl_renderer.find("softpipe") != std::string_view::npos;
-  return software ? PassTimingMethod::finish_wall_clock : PassTimingMethod::gpu_queries;
+  return software_gl_renderer(gl_renderer) ? PassTimingMethod::finish_wall_clock : PassTimingMethod::gpu_queries;
 }
 
 namespace {

@@ -17,6 +17,7 @@
 #include "render/gpu_scene.h"
 #include "render/lighting_pass.h"
 #include "render/primary_ray_pass.h"
+#include "render/primary_visibility_choice.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
 #include "render/shadow_chunks.h"
@@ -66,7 +67,14 @@ public:
   void trace_primary_visibility(rt::RayTracer& tracer);
   // The primary rays (PrimaryVisibility::rt after trace_primary_visibility), for tests; else null.
   const PrimaryRayPass* primary_rays() const { return primary_rays_ ? &*primary_rays_ : nullptr; }
-  // The compute rasteriser (PrimaryVisibility::compute), for tests; else null.
+  // The method that makes the ids: RasterSettings::primary, or, for automatic, the one the first
+  // frame chose (automatic until then). Meaningless with the raster G-buffer, which makes no ids.
+  PrimaryVisibility primary_visibility() const;
+  // PrimaryVisibility::automatic with the visibility G-buffer, after the first frame: both methods'
+  // times and the choice (run.json records them); else nullopt.
+  const std::optional<PrimaryVisibilityChoice>& primary_visibility_choice() const { return primary_choice_; }
+  // The compute rasteriser (PrimaryVisibility::compute, or automatic until the first frame chose the
+  // id draw), for tests; else null.
   const ComputeVisibilityPass* compute_visibility() const { return compute_visibility_ ? &*compute_visibility_ : nullptr; }
 
   GLuint albedo_reflectivity() const { return targets_.albedo_reflectivity.id(); }
@@ -95,6 +103,9 @@ public:
   ImageRgba8 read_rgba8(RasterOutput output) const;
 
 private:
+  // PrimaryVisibility::automatic's first frame: times both id makers and keeps the faster.
+  void choose_primary_visibility();
+
   const Scene* scene_;
   RasterSettings settings_;
   GpuScene gpu_scene_;
@@ -108,6 +119,8 @@ private:
   std::optional<VisibilityGBufferPass> visibility_gbuffer_;
   std::optional<PrimaryRayPass> primary_rays_;  // PrimaryVisibility::rt instead of visibility_ids_
   std::optional<ComputeVisibilityPass> compute_visibility_;  // PrimaryVisibility::compute instead of visibility_ids_
+  // PrimaryVisibility::automatic: both of the above until the first frame, which times them here.
+  std::optional<PrimaryVisibilityChoice> primary_choice_;
   ShadowCubePass shadow_cube_;
   ShadowMaskPass shadow_mask_;
   LightingPass lighting_;

@@ -38,22 +38,30 @@ inline std::string_view gbuffer_method_name(GBufferMethod method) { return kGBuf
 inline GBufferMethod parse_gbuffer_method(std::string_view name) { return kGBufferMethodNames.parse(name); }
 
 // How the visibility G-buffer's ids are made (only with GBufferMethod::visibility):
-//   raster  VisibilityIdPass draws every instance
-//   rt      one camera ray per pixel centre through the frame's ray tracer (PrimaryRayPass), whose
-//           closest hits become the ids; the depth target is not written (no frame pass reads it)
-// An experiment (issue 19 item 4): on the H100 the G-buffer pass takes 0.86 instead of 1.16 ms, but
-// the frame is not faster at 1280x720 (the camera rays add a CUDA-GL hand-over; docs/render.md,
-// "Ray-traced primary visibility"), so raster is the default everywhere.
-//   compute  a compute-shader rasteriser (ComputeVisibilityPass) writes the same ids and depth: compute
-//           work runs on every SM, vertex/fragment work on few of the H100's (docs/render.md,
-//           "Compute-rasterised primary visibility")
-enum class PrimaryVisibility { raster, rt, compute };
+//   raster     VisibilityIdPass draws every instance
+//   rt         one camera ray per pixel centre through the frame's ray tracer (PrimaryRayPass), whose
+//              closest hits become the ids; the depth target is not written (no frame pass reads it).
+//              An experiment (issue 19 item 4): on the H100 the G-buffer pass took 0.86 instead of
+//              1.16 ms, but the frame was not faster at 1280x720 (the camera rays add a CUDA-GL
+//              hand-over; docs/render.md, "Ray-traced primary visibility")
+//   compute    a compute-shader rasteriser (ComputeVisibilityPass) writes the same ids and depth:
+//              compute work runs on every SM, vertex/fragment work on few of the H100's (docs/render.md,
+//              "Compute-rasterised primary visibility")
+//   automatic  raster or compute, whichever makes this scene's ids faster on this GL device: on a GPU
+//              both are timed on the first frame and compute must win by a quarter; Mesa's software
+//              rasterisers keep the id draw untimed (primary_visibility_choice.h says why). On the
+//              H100 compute wins (0.17 against 1.16 ms, atrium 1280x720) because only 4 of its 132
+//              SMs run fragment shaders. glint render's default.
+enum class PrimaryVisibility { raster, rt, compute, automatic };
 
-inline constexpr EnumNames<PrimaryVisibility, 3> kPrimaryVisibilityNames{
+inline constexpr EnumNames<PrimaryVisibility, 4> kPrimaryVisibilityNames{
     "primary visibility",
-    {{PrimaryVisibility::raster, "raster"}, {PrimaryVisibility::rt, "rt"}, {PrimaryVisibility::compute, "compute"}}};
+    {{PrimaryVisibility::raster, "raster"},
+     {PrimaryVisibility::rt, "rt"},
+     {PrimaryVisibility::compute, "compute"},
+     {PrimaryVisibility::automatic, "auto"}}};
 
-// "raster", "rt", "compute"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
+// "raster", "rt", "compute", "auto"; parse_primary_visibility is the inverse (glint::Error naming the known ones).
 inline std::string_view primary_visibility_name(PrimaryVisibility primary) {
   return kPrimaryVisibilityNames.name_of(primary);
 }
@@ -63,7 +71,9 @@ struct RasterSettings {
   int shadow_map_size = 1024;         // cube face side in texels
   ShadowCubeDraw shadow_cube_draw = ShadowCubeDraw::per_face;
   GBufferMethod gbuffer = GBufferMethod::raster;
-  PrimaryVisibility primary = PrimaryVisibility::raster;  // rt, compute: need gbuffer visibility (rt: and a tracer)
+  // rt, compute: need gbuffer visibility (rt: and a tracer); automatic: chooses with gbuffer visibility,
+  // means nothing with raster (RasterSettings keeps raster: the same ids on every machine)
+  PrimaryVisibility primary = PrimaryVisibility::raster;
   // Also write the G-buffer's world motion of the deforming meshes (SurfaceMotion, surface_motion.h):
   // the reflection denoiser's reprojection; FramePipeline turns it on with --denoise on.
   bool surface_motion = false;

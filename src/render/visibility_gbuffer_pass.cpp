@@ -3,10 +3,10 @@
 #include "core/error.h"
 #include "gl/gl_check.h"
 #include "gl/gl_pass_scope.h"
+#include "gl/gl_renderer.h"
 #include "render/compute_dispatch.h"
 #include "render/render_targets.h"
 
-#include <string_view>
 
 namespace glint::render {
 namespace {
@@ -22,11 +22,7 @@ constexpr GLuint kMotionUnit = 5;
 // Mesa's software rasterisers: their compute-shader textureGrad is ~60x slower than the whole raster
 // G-buffer (docs/render.md, "Visibility G-buffer"), so a shader that filters from texelFetch runs
 // there.
-bool software_renderer() {
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string_view name = renderer != nullptr ? renderer : "";
-  return name.find("llvmpipe") != std::string_view::npos || name.find("softpipe") != std::string_view::npos;
-}
+bool software_renderer() { return software_gl_renderer(current_gl_renderer()); }
 
 }  // namespace
 

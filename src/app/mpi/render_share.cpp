@@ -120,7 +120,10 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
       for (FrameMeasurement& measured : loop.submit(frames[i])) keep(measured);
     for (FrameMeasurement& measured : loop.drain()) keep(measured);
     if (image_writer) image_writer->finish();
-    nlohmann::json result = {{"rows", rows}, {"scopes", scopes}, {"rank", world().rank}};
+    nlohmann::json result = {{"rows", rows},
+                             {"scopes", scopes},
+                             {"rank", world().rank},
+                             {"primary_visibility", primary_visibility_record(pipeline.raster())}};
     if (const rt::RayTracer* tracer = pipeline.ray_tracer()) {
       const rt::RayTracerStats stats = tracer->stats();
       result["tracer"] = {{"rebuilds", stats.rebuilds}, {"refits", stats.refits}};  // this rank's, so far
@@ -202,6 +205,9 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
     nlohmann::json entry = report.about.is_object() ? report.about : nlohmann::json::object();
     entry["rank"] = report.rank;
     entry["pieces_done"] = report.pieces_done;
+    // Each rank chose its own with --primary auto (its GPU may differ); the last piece it did says which.
+    for (const nlohmann::json& result : shared->results)
+      if (result.is_object() && result["rank"] == report.rank) entry["primary_visibility"] = result["primary_visibility"];
     if (report.failure) {
       entry["failure"] = *report.failure;
       log_warning("render: rank {} failed ({}); its frames were rendered by the others", report.rank, *report.failure);
@@ -214,6 +220,7 @@ int run_render_shared(const RenderOptions& options, const RenderOptions& recorde
                                              "pays for shader compilation and its own structure build"},
                                     {"per_rank", ranks},
                                     {"pieces", pieces}});
+  record.set_primary_visibility(pipeline.raster());
   record.write(out.path() / "run.json", run_watch.elapsed_ms(), tracer_stats);
   log_info("wrote {} frames to {} ({} ranks)", frames.size(), out.path().string(), world().size);
   return 0;
