@@ -11,7 +11,7 @@
 namespace glint::accel {
 
 double sah_cost(const Bvh& bvh, const BuildOptions& build) {
-  return compute_stats(bvh, {build.traversal_cost, build.intersection_cost}).sah_cost;
+  return compute_stats(bvh, sah_costs(build)).sah_cost;
 }
 
 BvhStats compute_stats(const Bvh& bvh, const SahCosts& costs) {

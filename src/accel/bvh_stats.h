@@ -33,6 +33,9 @@ struct BvhStats {
 
 BvhStats compute_stats(const Bvh& bvh, const SahCosts& costs = {});
 
+// The costs `build` used (its traversal and intersection costs), as compute_stats takes them.
+inline SahCosts sah_costs(const BuildOptions& build) { return {build.traversal_cost, build.intersection_cost}; }
+
 // The SAH cost of `bvh` with the costs `build` used: what the automatic update policy compares
 // before and after refits (rt/update_decision.h).
 double sah_cost(const Bvh& bvh, const BuildOptions& build);

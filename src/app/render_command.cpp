@@ -116,12 +116,6 @@ render::FramePipelineSettings render_pipeline_settings(const RenderOptions& opti
       fail("--deform-on gpu needs --backend gl, {} when rays are traced (reflections hybrid or rt, shadows rt or "
            "hybrid, or primary rt; the {} backend builds from host vertices); use --deform-on cpu",
            backends::gpu_backends_text(), options.backend);
-    // The gl backend follows GPU-posed meshes by refitting in GL compute; rebuilding (rebuild, or auto
-    // past its SAH ratio) builds on the host, from host vertices the GPU deformer never wrote.
-    if (is_gl_backend(options) && settings.ray_tracing.update != rt::UpdatePolicy::refit)
-      fail("--deform-on gpu with --backend gl refits on the GPU, but --update {} rebuilds on the host; use --update "
-           "refit or --deform-on cpu",
-           options.update);
   }
   settings.validate();
   return settings;
@@ -207,9 +201,9 @@ vec3 parse_point_flag(std::string_view flag, std::string_view text) {
 
 bool deforms_on_gpu(const RenderOptions& options) {
   if (!options.deform_on.empty()) return options.deform_on == "gpu";
-  // gl follows GPU-posed meshes by refitting only, so it deforms on the GPU by default where it refits
-  // (--update refit); under the default --update auto the host keeps deforming and may rebuild.
-  return backends::is_gpu_backend(options.backend) || (is_gl_backend(options) && options.update == "refit");
+  // gl follows GPU-posed meshes under every --update: refits in GL compute, and rebuilds (rebuild, or
+  // auto past its SAH ratio, measured in GL compute) on the host from the positions read back.
+  return backends::is_gpu_backend(options.backend) || is_gl_backend(options);
 }
 
 void add_render_command(CLI::App& app, RenderOptions& options) {
@@ -244,8 +238,10 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
       ->capture_default_str();
   command->add_option("--update", options.update,
                       "How deforming meshes' structures follow them each frame: rebuild, refit, or auto (refit, "
-                      "rebuild once the SAH cost drifted 30 % above the last build's); --backend gl deforming on "
-                      "the GPU refits only")
+                      "rebuild once the SAH cost drifted 30 % above the last build's; with --deform-on gpu the "
+                      "cost is measured on the GPU and read one or more frames late); --backend gl deforming on "
+                      "the GPU refits in GL compute and rebuilds on the host from positions read back (rebuild: "
+                      "every frame, slow)")
       ->check(CLI::IsMember(rt::kUpdatePolicyNames.names()))
       ->capture_default_str();
   command->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 16384))->capture_default_str();
@@ -303,9 +299,9 @@ void add_render_command(CLI::App& app, RenderOptions& options) {
   command->add_option("--deform-on", options.deform_on,
                       "Where the deformable meshes are posed: gpu (GL compute writing the GL vertices; CUDA kernels "
                       "the cuda or optix backend's positions, whose structures follow on the GPU; the gl backend's "
-                      "positions copied from GL's and its structures refitted in GL compute, so it needs --update "
-                      "refit) or cpu; default: gpu with --backend cuda or optix, and with --backend gl --update "
-                      "refit; else cpu")
+                      "positions written by the same GL compute and its structures refitted in GL compute, "
+                      "rebuilt on the host from positions read back under --update rebuild, and auto past its "
+                      "ratio) or cpu; default: gpu with --backend cuda, optix or gl; else cpu")
       ->check(CLI::IsMember({"gpu", "cpu"}));
   command->add_option("--hold-frame", options.hold_frame,
                       "Hold the scene still at walkthrough frame N: every frame rendered has frame N's camera, "

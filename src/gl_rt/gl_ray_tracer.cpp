@@ -1,11 +1,13 @@
 #include "gl_rt/gl_ray_tracer.h"
 
 #include "accel/builders/builder.h"
+#include "accel/bvh_stats.h"
 #include "core/error.h"
 #include "core/stopwatch.h"
 #include "gl/gl_check.h"
 #include "gl_rt/gl_rt_bindings.h"
 #include "gl_rt/make_gl_ray_tracer.h"
+#include "rt/update_decision.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -105,6 +107,7 @@ void GlRayTracer::build(const Scene& scene, const rt::AccelOptions& options) {
   shape_ = rt::scene_shape(scene);
   blases_.build(scene, options);
   refitted_on_gpu_.assign(scene.meshes.size(), false);
+  sah_readback_.reset(scene.meshes.size());
   gpu_refits_ = 0;
   // Binned SAH like the cpu backend's TLAS, whatever the BLAS builder.
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
@@ -131,7 +134,11 @@ void GlRayTracer::update(const Scene& scene, std::span<const uint32_t> dirty_mes
   tlas_ = accel::build_tlas(blases_.blases(), make_instances(scene), accel::BvhBuilder::sah, options_.build);
   structures_.upload_update(blases_, updated, rebuilt, tlas_);
   set_tlas_node_count();
-  for (uint32_t m : updated) refitted_on_gpu_[m] = false;
+  for (uint32_t m : updated) {
+    refitted_on_gpu_[m] = false;
+    // The host decided on its own measurement; the GPU's, of boxes now replaced, no longer apply.
+    sah_readback_.forget(m);
+  }
   last_update_ms_ = watch.elapsed_ms();
 }
 
@@ -145,10 +152,6 @@ rt::GlTracing::VertexRange GlRayTracer::gl_positions(std::uint32_t mesh) {
 
 void GlRayTracer::update_gl(std::span<const std::uint32_t> dirty_meshes, rt::UpdatePolicy policy) {
   require_built("update_gl()");
-  if (policy != rt::UpdatePolicy::refit)
-    fail("rt gl: update policy '{}' builds on the host from host vertices; a GL-side update refits only (use refit, "
-         "or update() with the scene)",
-         rt::update_policy_name(policy));
   std::vector<std::uint32_t> meshes;
   meshes.reserve(dirty_meshes.size());
   std::vector<bool> listed(structures_.mesh_count(), false);
@@ -161,10 +164,44 @@ void GlRayTracer::update_gl(std::span<const std::uint32_t> dirty_meshes, rt::Upd
   }
   blases_.check_refittable(meshes, policy, name());
   const Stopwatch watch;
-  refit_.refit(structures_, meshes);
-  for (const std::uint32_t m : meshes) refitted_on_gpu_[m] = true;
-  gpu_refits_ += meshes.size();
+  // automatic: the costs of earlier updates' refits the GPU has measured by now (never waited for).
+  if (policy == rt::UpdatePolicy::automatic) sah_readback_.collect();
+  std::vector<std::uint32_t> refitted, rebuilt;
+  for (const std::uint32_t m : meshes) {
+    const rt::BlasUpdate action = rt::decide_blas_update(
+        policy, sah_readback_.cost(m), blases_.meshes()[m].sah_at_rebuild, options_.auto_rebuild_sah_ratio);
+    (action == rt::BlasUpdate::rebuild ? rebuilt : refitted).push_back(m);
+  }
+  // Unless the host built a new TLAS over the rebuilt BLASes, the GPU refits it (after rebuilds alone
+  // too: its leaves take the rebuilt BLASes' root boxes) with the refitted BLASes.
+  const bool new_tlas = rebuild_from_gl_positions(rebuilt, policy == rt::UpdatePolicy::rebuild);
+  if (!new_tlas) refit_.refit(structures_, refitted);
+  for (const std::uint32_t m : refitted) refitted_on_gpu_[m] = true;
+  gpu_refits_ += refitted.size();
+  if (policy == rt::UpdatePolicy::automatic)
+    (void)sah_readback_.measure(sah_, structures_, refitted, accel::sah_costs(options_.build));
   last_update_ms_ = watch.elapsed_ms();
+}
+
+bool GlRayTracer::rebuild_from_gl_positions(std::span<const std::uint32_t> meshes, bool new_tlas) {
+  if (meshes.empty()) return false;
+  for (const std::uint32_t m : meshes) {
+    // A blocking read (the host waits for the deformer's dispatch): rebuild policy pays it every update,
+    // automatic only when a cost passed the ratio.
+    blases_.rebuild_at(m, structures_.read_positions(m));
+    refitted_on_gpu_[m] = false;
+    sah_readback_.forget(m);
+  }
+  // A new TLAS needs every BLAS's box on the host: not while another mesh's boxes live only on the GPU.
+  new_tlas = new_tlas && std::find(refitted_on_gpu_.begin(), refitted_on_gpu_.end(), true) == refitted_on_gpu_.end();
+  if (new_tlas) tlas_ = accel::build_tlas(blases_.blases(), tlas_.instances, accel::BvhBuilder::sah, options_.build);
+  // The rebuilt BLASes' nodes, leaf slots and links, and the TLAS: the new one, or the last one the host
+  // built, whose topology the GPU refit keeps (it rewrites every box). Only an sbvh BVH outgrows its
+  // region and makes upload_update lay everything out again from the host's copies; sbvh is never
+  // refitted, so no mesh then has boxes only on the GPU.
+  structures_.upload_update(blases_, meshes, std::vector<bool>(meshes.size(), true), tlas_);
+  set_tlas_node_count();
+  return new_tlas;
 }
 
 void GlRayTracer::dispatch(const Kernel& kernel, GLuint rays, GLuint results, GLuint ray_count,
@@ -263,6 +300,18 @@ void GlRayTracer::trace_any(std::span<const accel::Ray> rays, std::span<uint8_t>
   std::transform(flags.begin(), flags.end(), occluded.begin(), [](std::uint32_t flag) { return static_cast<uint8_t>(flag != 0 ? 1 : 0); });
 }
 
+std::optional<double> GlRayTracer::sah_drift() const {
+  // The meshes whose boxes only the GPU has are measured there, now (the host waits: stats() is read
+  // at the end of a run, as the cuda backend's); the host measures its own BVHs.
+  std::vector<std::uint32_t> on_gpu;
+  for (std::uint32_t m = 0; m < refitted_on_gpu_.size(); ++m)
+    if (refitted_on_gpu_[m] && blases_.meshes()[m].deformable) on_gpu.push_back(m);
+  std::vector<std::optional<double>> measured(refitted_on_gpu_.size());
+  const std::vector<double> costs = sah_.measure_now(structures_, on_gpu, accel::sah_costs(options_.build));
+  for (std::size_t i = 0; i < on_gpu.size(); ++i) measured[on_gpu[i]] = costs[i];
+  return blases_.sah_drift(measured);
+}
+
 rt::RayTracerStats GlRayTracer::stats() const {
   rt::RayTracerStats stats;
   stats.backend = std::string(name());
@@ -270,9 +319,7 @@ rt::RayTracerStats GlRayTracer::stats() const {
   stats.last_update_ms = last_update_ms_;
   stats.rebuilds = blases_.rebuilds();
   stats.refits = blases_.refits() + gpu_refits_;
-  // The host measures the drift on its own BVHs, which a GPU refit leaves behind.
-  if (std::find(refitted_on_gpu_.begin(), refitted_on_gpu_.end(), true) == refitted_on_gpu_.end())
-    stats.blas_sah_drift = blases_.sah_drift();
+  stats.blas_sah_drift = sah_drift();
   // GPU memory: the structure buffers, the GPU refit's included (the host keeps its own copy of the
   // BVHs and meshes too).
   stats.memory_bytes = structures_.bytes();

@@ -9,7 +9,10 @@
 // (gl_structure_buffers.h). update() rebuilds or refits the dirty BLASes on the CPU by policy, builds
 // the TLAS again and uploads only the dirty meshes' ranges and the TLAS. update_gl() (GlTracing), after
 // a GL-side deformer wrote the positions into gl_positions(), refits the BLASes and the TLAS on the GPU
-// instead (gl_refit.h): no host refit, no upload, nothing waits.
+// instead (gl_refit.h): no host refit, no upload, nothing waits. Under the automatic policy the GPU
+// also measures each refitted BLAS's SAH cost (gl_sah_cost.h), read back updates later without a
+// wait (gl_sah_readback.h); the update that finds a cost past the ratio reads that mesh's positions
+// back and rebuilds it on the host, as the rebuild policy does every update.
 //
 // Tracing: shaders/gl_rt_closest.comp.glsl and gl_rt_any.comp.glsl, one invocation per ray, walking
 // the TLAS and each BLAS entered the way accel/traverse.h does with accel's watertight triangle test
@@ -25,12 +28,15 @@
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
 #include "gl_rt/gl_refit.h"
+#include "gl_rt/gl_sah_cost.h"
+#include "gl_rt/gl_sah_readback.h"
 #include "gl_rt/gl_structure_buffers.h"
 #include "gl_rt/mesh_blases.h"
 #include "rt/ray_tracer.h"
 #include "rt/scene_shape.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace glint::gl_rt {
 
@@ -63,10 +69,15 @@ public:
   void trace_any_gl(std::uint32_t rays, std::uint32_t occluded, std::uint32_t ray_count,
                     std::uint32_t capacity) override;
   void bind_inline_tracing(std::uint32_t program) override;
-  // rt::GlTracing: the vertex range of `mesh`; update_gl enqueues the GPU refit (GlRefit) of the
-  // dirty meshes' BLASes and the TLAS (a duplicate in the list is refitted once). stats() counts these
-  // refits; last_update_ms is then the host's enqueueing, and blas_sah_drift is absent while a mesh's
-  // boxes live only on the GPU (the host cannot measure them without reading them back).
+  // rt::GlTracing: the vertex range of `mesh`; update_gl by policy (a duplicate in the list counts
+  // once): refit enqueues the GPU refit (GlRefit) of the dirty meshes' BLASes and the TLAS; automatic
+  // refits the same way and measures each refitted BLAS's SAH cost on the GPU, and rebuilds a mesh
+  // whose cost, measured one or more updates before (the latest the GPU had finished: never waited
+  // for), passed auto_rebuild_sah_ratio x its cost right after its last build; rebuild rebuilds every
+  // dirty mesh. A rebuild reads the mesh's positions back (the host waits for the GPU), builds with
+  // AccelOptions::builder on the host and uploads it; rebuild builds the TLAS anew too, automatic refits
+  // it on the GPU. stats() counts GPU refits and host rebuilds; last_update_ms is the host's part
+  // (enqueueing, and any rebuild's read, build and upload).
   VertexRange gl_positions(std::uint32_t mesh) override;
   void update_gl(std::span<const std::uint32_t> dirty_meshes, rt::UpdatePolicy policy) override;
 
@@ -88,6 +99,12 @@ private:
   static Kernel make_kernel(const char* name);
 
   void require_built(const char* what) const;
+  // update_gl's host rebuild of GPU-posed meshes: their positions read back, BLASes built with the
+  // configured builder, uploaded. With `new_tlas`, also a TLAS built anew, where every BLAS's boxes are
+  // on the host; returns whether it was (else the caller refits the TLAS on the GPU).
+  bool rebuild_from_gl_positions(std::span<const std::uint32_t> meshes, bool new_tlas);
+  // RayTracerStats::blas_sah_drift: the host's BVHs measured on the host, GPU-refitted ones on the GPU.
+  std::optional<double> sah_drift() const;
   void set_tlas_node_count();
   // Binds the structures and the call's buffers and dispatches `kernel` over `capacity` rays (in
   // pieces of at most max_groups_per_dispatch_ work groups), then the barriers the results' readers
@@ -101,6 +118,8 @@ private:
   Kernel any_;
   GlBuffer flag_;  // one uint: a stack overflowed
   GlRefit refit_;
+  mutable GlSahCost sah_;       // stats() measures with it too
+  GlSahReadback sah_readback_;  // automatic: the GPU's costs of refitted BLASes, read updates late
   rt::AccelOptions options_;
   rt::SceneShape shape_;
   MeshBlases blases_;

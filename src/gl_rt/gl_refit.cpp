@@ -5,7 +5,6 @@
 #include "gl/gl_pass_scope.h"
 #include "gl_rt/gl_rt_bindings.h"
 
-#include <algorithm>
 #include <string_view>
 
 namespace glint::gl_rt {
@@ -46,16 +45,7 @@ void GlRefit::refit(const GlStructureBuffers& structures, std::span<const std::u
   // Node counts sum below 2^32: they all live in one node array of 32-bit indices.
   structures.bind_for_refit();
   if (!job_scratch_.empty()) {
-    if (job_scratch_ != jobs_in_buffer_) {
-      if (job_scratch_.size() > job_capacity_) {
-        job_capacity_ = std::max(job_scratch_.size(), 2 * job_capacity_);
-        jobs_ = create_buffer(job_capacity_ * sizeof(glm::uvec4), nullptr, GL_DYNAMIC_STORAGE_BIT);
-      }
-      glNamedBufferSubData(jobs_.id(), 0, static_cast<GLsizeiptr>(job_scratch_.size() * sizeof(glm::uvec4)),
-                           job_scratch_.data());
-      jobs_in_buffer_ = job_scratch_;
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRefitJobBinding, jobs_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRefitJobBinding, jobs_.hold(job_scratch_));
     glProgramUniform1ui(blas_.id(), job_count_, static_cast<GLuint>(job_scratch_.size()));
     glProgramUniform1ui(blas_.id(), invocation_count_, static_cast<GLuint>(invocations));
     blas_.use();

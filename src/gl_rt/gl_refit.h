@@ -11,6 +11,7 @@
 // accel::refit_tlas's.
 #include "gl/gl_objects.h"
 #include "gl/shader_program.h"
+#include "gl_rt/gl_job_buffer.h"
 #include "gl_rt/gl_structure_buffers.h"
 
 #include <cstdint>
@@ -34,9 +35,7 @@ private:
   ShaderProgram blas_;
   ShaderProgram tlas_;
   GLint job_count_ = -1, invocation_count_ = -1, tlas_node_count_ = -1;
-  GlBuffer jobs_;                       // the BLAS dispatch's jobs (refit_jobs), grown as needed
-  std::size_t job_capacity_ = 0;
-  std::vector<glm::uvec4> jobs_in_buffer_;  // what jobs_ holds: a frame with the same meshes uploads nothing
+  GlJobBuffer jobs_;  // the BLAS dispatch's jobs (refit_jobs)
   std::vector<glm::uvec4> job_scratch_;
 };
 

@@ -23,6 +23,11 @@ inline constexpr GLuint kRefitLinkBinding = kResultBinding;         // per node:
 inline constexpr GLuint kRefitJobBinding = kRayCountBinding;        // the BLASes of a refit
 inline constexpr GLuint kRefitTransformBinding = kFlagBinding;      // per instance: object_to_world
 
+// The SAH cost's (gl_sah_cost.h, shaders/gl_rt_sah_cost.comp.glsl) likewise: it reads the nodes
+// through their texture unit, as the traces do, and writes one cost per BLAS.
+inline constexpr GLuint kSahCostBinding = kResultBinding;  // per job: its BLAS's cost, a double
+inline constexpr GLuint kSahJobBinding = kRayCountBinding;  // the BLASes measured
+
 // The texture unit of every BVH's accel::BvhNode array, TLAS first, read as a buffer texture (two
 // RGBA32UI texels a node) rather than a storage buffer: the walk's node loads then go through the
 // texture cache, which made the closest-hit trace 0.52 -> 0.47 ms on an H100 (docs/perf.md, "Tenth

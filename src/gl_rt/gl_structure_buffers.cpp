@@ -187,6 +187,21 @@ void GlStructureBuffers::write_links(const accel::Bvh& bvh, uint32_t node_offset
   write(links_, node_offset, std::span<const glm::uvec2>(link_scratch_));
 }
 
+std::vector<vec3> GlStructureBuffers::read_positions(uint32_t mesh) const {
+  const BlasRegion& region = regions_[mesh];
+  std::vector<vec4> widened(region.vertex_count);
+  // Shader writes (the deformer's) reach a buffer read only past this barrier.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (!widened.empty())
+    glGetNamedBufferSubData(vertices_.id(), static_cast<GLintptr>(std::size_t{region.vertex_offset} * sizeof(vec4)),
+                            static_cast<GLsizeiptr>(widened.size() * sizeof(vec4)), widened.data());
+  check_gl("rt gl: reading positions back");
+  std::vector<vec3> positions;
+  positions.reserve(widened.size());
+  for (const vec4& p : widened) positions.emplace_back(p);
+  return positions;
+}
+
 void GlStructureBuffers::bind() const {
   glBindTextureUnit(kNodeTextureUnit, node_texels_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTlasRefBinding, tlas_refs_.id());

@@ -71,6 +71,10 @@ public:
   // Binds what the GPU refit reads and writes at its bindings (gl_rt_bindings.h, kRefit*).
   void bind_for_refit() const;
 
+  // The positions of `mesh` as the vertex buffer holds them now (a GPU deformer's), read back: the host
+  // waits for the GPU, so only a host rebuild of a GPU-posed mesh does this.
+  std::vector<vec3> read_positions(uint32_t mesh) const;
+
   const BlasRegion& region(uint32_t mesh) const { return regions_[mesh]; }
   size_t mesh_count() const { return regions_.size(); }
   GLuint nodes() const { return nodes_.id(); }

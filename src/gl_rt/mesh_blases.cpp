@@ -76,11 +76,23 @@ std::vector<bool> MeshBlases::update(const Scene& scene, std::span<const uint32_
   return rebuilt;
 }
 
-std::optional<double> MeshBlases::sah_drift() const {
+void MeshBlases::rebuild_at(uint32_t mesh, std::span<const vec3> positions) {
+  if (positions.size() != meshes_[mesh].positions.size())
+    fail("rt gl: mesh '{}' has {} vertices, {} given", meshes_[mesh].name, meshes_[mesh].positions.size(),
+         positions.size());
+  // Same count, new positions: the views' pointers stay valid.
+  std::copy(positions.begin(), positions.end(), meshes_[mesh].positions.begin());
+  rebuild(mesh);
+  ++rebuilds_;
+}
+
+std::optional<double> MeshBlases::sah_drift(std::span<const std::optional<double>> measured) const {
   std::optional<double> drift;
-  for (const Mesh& mesh : meshes_) {
+  for (uint32_t m = 0; m < meshes_.size(); ++m) {
+    const Mesh& mesh = meshes_[m];
     if (!mesh.deformable || mesh.sah_at_rebuild <= 0.0) continue;
-    drift = std::max(drift.value_or(0.0), accel::sah_cost(mesh.bvh, options_.build) / mesh.sah_at_rebuild);
+    const double now = m < measured.size() && measured[m] ? *measured[m] : accel::sah_cost(mesh.bvh, options_.build);
+    drift = std::max(drift.value_or(0.0), now / mesh.sah_at_rebuild);
   }
   return drift;
 }

@@ -47,13 +47,19 @@ public:
   // refitted (same topology, new boxes).
   std::vector<bool> update(const Scene& scene, std::span<const uint32_t> dirty_meshes, rt::UpdatePolicy policy);
 
+  // A mesh posed on the GPU (the gl backend's update_gl): `positions`, read back from GL, become its
+  // positions and its BVH is built again with options.builder, counted as a rebuild.
+  void rebuild_at(uint32_t mesh, std::span<const vec3> positions);
+
   const std::vector<Mesh>& meshes() const { return meshes_; }
   // Views of meshes(), one per mesh: what accel::build_tlas takes.
   std::span<const accel::Blas> blases() const { return blases_; }
   size_t rebuilds() const { return rebuilds_; }
   size_t refits() const { return refits_; }
-  // Max over deformable meshes of SAH now / SAH at the last rebuild; nullopt without one.
-  std::optional<double> sah_drift() const;
+  // Max over deformable meshes of SAH now / SAH at the last rebuild; nullopt without one. "Now" is
+  // `measured[m]` where the caller has it (the GPU's measurement of a BLAS refitted on the GPU, whose
+  // host BVH is older) and the host BVH's cost otherwise.
+  std::optional<double> sah_drift(std::span<const std::optional<double>> measured = {}) const;
 
 private:
   void rebuild(uint32_t mesh);

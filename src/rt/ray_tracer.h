@@ -156,11 +156,12 @@ public:
     std::uint32_t vertex_count = 0;
   };
   virtual VertexRange gl_positions(std::uint32_t mesh) = 0;
-  // Like RayTracer::update, after a GL-side deformer rewrote gl_positions() of `dirty_meshes`: the
-  // structures are refitted on the GPU (GL compute, enqueued; the host never waits and nothing is
-  // copied from the host) and the instances keep the transforms of the last build or update. Only
-  // UpdatePolicy::refit is done on the GPU: rebuild and automatic are glint::Error (they build on the
-  // host, from host vertices); so is a structure that cannot be refitted.
+  // Like RayTracer::update, after a GL-side deformer rewrote gl_positions() of `dirty_meshes`; the
+  // instances keep the transforms of the last build or update. refit: refitted on the GPU (GL compute,
+  // enqueued; the host never waits and nothing is copied from the host). automatic: refitted so, the
+  // SAH cost measured on the GPU and read back updates later; a mesh whose cost passed the ratio is
+  // rebuilt on the host from its positions read back (the host waits for that read). rebuild: every
+  // dirty mesh so (correct, slow). A structure that cannot be refitted takes rebuild only, as update().
   virtual void update_gl(std::span<const std::uint32_t> dirty_meshes, UpdatePolicy policy) = 0;
 };
 

@@ -11,15 +11,6 @@
 namespace glint::rt {
 namespace {
 
-// The instanced test scene with the sheet's wave made strong enough to wreck a refitted BVH.
-Scene strongly_deforming_scene() {
-  Scene scene = testing::make_instanced_scene(16);
-  SineDeform& wave = *scene.meshes[2].deform;
-  wave.amplitude = 1.0f;
-  wave.frequency = 25.0f;
-  return scene;
-}
-
 // Builds, deforms once, updates with `policy`, checks the hits and returns the stats. The policy
 // and the drift come from the binary BVH whatever the traversal, so every check below runs with
 // both traversals.
@@ -40,14 +31,14 @@ RayTracerStats update_once(Scene& scene, UpdatePolicy policy, float ratio, bool 
 class CpuRayTracerPolicy : public ::testing::TestWithParam<bool> {};
 
 TEST_P(CpuRayTracerPolicy, RefitDriftsAndRebuildDoesNot) {
-  Scene refitted = strongly_deforming_scene();
+  Scene refitted = testing::make_strongly_deforming_scene();
   const RayTracerStats refit = update_once(refitted, UpdatePolicy::refit, 1.3f, GetParam());
   EXPECT_EQ(refit.refits, 1u);
   EXPECT_EQ(refit.rebuilds, 0u);
   ASSERT_TRUE(refit.blas_sah_drift.has_value());
   EXPECT_GT(*refit.blas_sah_drift, 1.0);
 
-  Scene rebuilt = strongly_deforming_scene();
+  Scene rebuilt = testing::make_strongly_deforming_scene();
   const RayTracerStats rebuild = update_once(rebuilt, UpdatePolicy::rebuild, 1.3f, GetParam());
   EXPECT_EQ(rebuild.rebuilds, 1u);
   EXPECT_EQ(rebuild.refits, 0u);
@@ -55,13 +46,13 @@ TEST_P(CpuRayTracerPolicy, RefitDriftsAndRebuildDoesNot) {
 }
 
 TEST_P(CpuRayTracerPolicy, AutomaticRebuildsPastTheThresholdAndRefitsBelowIt) {
-  Scene strict = strongly_deforming_scene();
+  Scene strict = testing::make_strongly_deforming_scene();
   const RayTracerStats rebuilt = update_once(strict, UpdatePolicy::automatic, 1.0f, GetParam());
   EXPECT_EQ(rebuilt.rebuilds, 1u);
   EXPECT_EQ(rebuilt.refits, 0u);
   EXPECT_EQ(rebuilt.blas_sah_drift, 1.0);
 
-  Scene lenient = strongly_deforming_scene();
+  Scene lenient = testing::make_strongly_deforming_scene();
   const RayTracerStats refitted = update_once(lenient, UpdatePolicy::automatic, 1000.0f, GetParam());
   EXPECT_EQ(refitted.rebuilds, 0u);
   EXPECT_EQ(refitted.refits, 1u);

@@ -57,6 +57,14 @@ Scene make_instanced_scene(int sheet_cells) {
   return scene;
 }
 
+Scene make_strongly_deforming_scene() {
+  Scene scene = make_instanced_scene(16);
+  SineDeform& wave = *scene.meshes[2].deform;
+  wave.amplitude = 1.0f;
+  wave.frequency = 25.0f;
+  return scene;
+}
+
 Scene make_reduced_atrium(size_t max_deformable_instances) {
   const Scene full = make_preset("atrium-simple");
   Scene scene = full;

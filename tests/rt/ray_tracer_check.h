@@ -17,6 +17,10 @@ namespace glint::testing {
 // twice (once translated, once rotated and scaled).
 Scene make_instanced_scene(int sheet_cells = 8);
 
+// make_instanced_scene(16) with the sheet's (mesh 2's) wave made strong enough to wreck a refitted
+// BVH: its SAH cost after a refit grows well past the one it was built with.
+Scene make_strongly_deforming_scene();
+
 // atrium-simple cut down for a fast test: only the instances of the meshes named in `keep` (and of
 // every deformable mesh, at most `max_deformable_instances` of them), unused meshes dropped.
 Scene make_reduced_atrium(size_t max_deformable_instances = 2);
