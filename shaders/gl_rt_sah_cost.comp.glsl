@@ -7,25 +7,28 @@
 // divided by the root's half area (by 1 where that is 0). The areas are computed operation for
 // operation as the host's, under `precise`, so they are the same floats; only the order of the double
 // sums differs, so the cost agrees with the host's to double rounding.
-// One work group per BLAS (few deforming meshes, each of thousands of nodes): its invocations stride
-// over the BVH's nodes, then a tree reduction in shared memory. 1024 invocations, GL's guaranteed
-// most, so that a BLAS of 100k nodes takes about 100 dependent steps per invocation (16 KiB of shared
-// doubles, half GL's guaranteed 32 KiB).
-layout(local_size_x = 1024) in;
+// Two stages, a dispatch each, so that the sums spread over the GPU: a BVH of 100k nodes in one work
+// group took about 0.045 ms of a frame on an H200, its invocations looping over a hundred nodes each.
+//   stage 0  work group (g, j): nodes [g, g + 1) x nodes_per_invocation x the local size of job j's
+//            BLAS, summed in shared memory into sah_partials[j * groups_per_job + g]
+//   stage 1  work group (0, j): job j's partial sums, its cost
+layout(local_size_x = 256) in;
 
 #include "include/gl_rt_structures.glsl"
-#include "include/grid_invocation.glsl"
 
 // Per job: x its BVH's first node in the node array, y its node count (0: an empty BLAS, cost 0).
 layout(std430, binding = 27) readonly restrict buffer SahJobs { uvec4 sah_jobs[]; };
 layout(std430, binding = 26) writeonly restrict buffer SahCosts { double sah_costs[]; };
+// Per job and stage-0 work group: {interior half areas, leaf half areas x primitives}.
+layout(std430, binding = 25) restrict buffer SahPartials { dvec2 sah_partials[]; };
 
-uniform uint job_count;
-uniform float node_cost;  // accel::BuildOptions::traversal_cost
-uniform float prim_cost;  // accel::BuildOptions::intersection_cost
+uniform uint stage;
+uniform uint nodes_per_invocation;  // stage 0 (GlSahCost::kNodesPerInvocation)
+uniform uint groups_per_job;  // stage 0's work groups per job: enough for the largest BLAS
+uniform float node_cost;      // accel::BuildOptions::traversal_cost
+uniform float prim_cost;      // accel::BuildOptions::intersection_cost
 
-shared double interior_sums[gl_WorkGroupSize.x];
-shared double leaf_sums[gl_WorkGroupSize.x];
+shared dvec2 sums[gl_WorkGroupSize.x];
 
 // accel::half_area: 0 for an empty box, else e.x e.y + e.y e.z + e.z e.x in float, left to right.
 float half_area(vec3 low, vec3 high) {
@@ -35,32 +38,44 @@ float half_area(vec3 low, vec3 high) {
   return area;
 }
 
-void main() {
-  // Whole work groups per job (the grid's columns are groups), so a group returns or stays together
-  // and reaches the barriers below in uniform control flow.
-  const uint job = grid_invocation() / gl_WorkGroupSize.x;
-  if (job >= job_count) return;
+// The work group's sum of every invocation's `value` (all invocations call it).
+dvec2 group_sum(dvec2 value) {
   const uint local = gl_LocalInvocationID.x;
-  const uvec4 region = sah_jobs[job];
-  double interior = 0.0lf, leaves = 0.0lf;
-  for (uint i = local; i < region.y; i += gl_WorkGroupSize.x) {
-    const BvhNode node = load_node(region.x + i);
-    const double area = double(half_area(node.bounds_min, node.bounds_max));
-    if (node.prim_count != 0u) leaves += area * double(node.prim_count);
-    else interior += area;
-  }
-  interior_sums[local] = interior;
-  leaf_sums[local] = leaves;
+  sums[local] = value;
   memoryBarrierShared();
   barrier();
   for (uint stride = gl_WorkGroupSize.x / 2u; stride > 0u; stride /= 2u) {
-    if (local < stride) {
-      interior_sums[local] += interior_sums[local + stride];
-      leaf_sums[local] += leaf_sums[local + stride];
-    }
+    if (local < stride) sums[local] += sums[local + stride];
     memoryBarrierShared();
     barrier();
   }
+  return sums[0];
+}
+
+void main() {
+  // Whole work groups per job and partial (the grid's rows are jobs), so a group stays together and
+  // reaches group_sum's barriers in uniform control flow.
+  const uint job = gl_WorkGroupID.y;
+  const uint local = gl_LocalInvocationID.x;
+  const uvec4 region = sah_jobs[job];
+  if (stage == 0u) {
+    dvec2 sum = dvec2(0.0lf);
+    const uint first = gl_WorkGroupID.x * nodes_per_invocation * gl_WorkGroupSize.x + local;
+    for (uint k = 0u; k < nodes_per_invocation; ++k) {
+      const uint i = first + k * gl_WorkGroupSize.x;
+      if (i >= region.y) break;
+      const BvhNode node = load_node(region.x + i);
+      const double area = double(half_area(node.bounds_min, node.bounds_max));
+      if (node.prim_count != 0u) sum.y += area * double(node.prim_count);
+      else sum.x += area;
+    }
+    sum = group_sum(sum);
+    if (local == 0u) sah_partials[job * groups_per_job + gl_WorkGroupID.x] = sum;
+    return;
+  }
+  dvec2 sum = dvec2(0.0lf);
+  for (uint g = local; g < groups_per_job; g += gl_WorkGroupSize.x) sum += sah_partials[job * groups_per_job + g];
+  sum = group_sum(sum);
   if (local != 0u) return;
   if (region.y == 0u) {
     sah_costs[job] = 0.0lf;
@@ -69,5 +84,5 @@ void main() {
   const BvhNode root = load_node(region.x);
   const double root_area = double(half_area(root.bounds_min, root.bounds_max));
   const double normaliser = root_area > 0.0lf ? root_area : 1.0lf;
-  sah_costs[job] = (double(node_cost) * interior_sums[0] + double(prim_cost) * leaf_sums[0]) / normaliser;
+  sah_costs[job] = (double(node_cost) * sum.x + double(prim_cost) * sum.y) / normaliser;
 }

@@ -4,9 +4,9 @@
 // invocations in groups of 64), so the groups are laid out as columns x rows, columns filled first,
 // and the shader recovers its invocation index with grid_invocation()
 // (shaders/include/grid_invocation.glsl); invocations from N up to the grid's end return early.
-// Users: gl_rt/gl_refit.cpp, gl_rt/gl_sah_cost.cpp and render/gl_scene_deformer.cpp. It lives in gl/
-// rather than with the image passes' sizes in render/compute_dispatch.h because gl_rt/ may not include
-// render/: render/ includes backends/, which includes gl_rt/, and the folders' includes must have no cycle
+// Users: gl_rt/gl_refit.cpp and render/gl_scene_deformer.cpp (gl_rt/gl_sah_cost.cpp reads the limit).
+// It lives in gl/ rather than with the image passes' sizes in render/compute_dispatch.h because gl_rt/
+// may not include render/: render/ includes backends/, which includes gl_rt/, and the folders' includes must have no cycle
 // (tests/architecture/folder_dependencies_test.cpp).
 #include "core/error.h"
 

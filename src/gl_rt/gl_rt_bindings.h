@@ -27,6 +27,7 @@ inline constexpr GLuint kRefitTransformBinding = kFlagBinding;      // per insta
 // through their texture unit, as the traces do, and writes one cost per BLAS.
 inline constexpr GLuint kSahCostBinding = kResultBinding;  // per job: its BLAS's cost, a double
 inline constexpr GLuint kSahJobBinding = kRayCountBinding;  // the BLASes measured
+inline constexpr GLuint kSahPartialBinding = kRayBinding;    // per BLAS and work group: partial sums
 
 // The texture unit of every BVH's accel::BvhNode array, TLAS first, read as a buffer texture (two
 // RGBA32UI texels a node) rather than a storage buffer: the walk's node loads then go through the

@@ -32,10 +32,16 @@ public:
   std::vector<double> measure_now(const GlStructureBuffers& structures, std::span<const std::uint32_t> meshes,
                                   const accel::SahCosts& costs);
 
+  // Nodes each invocation of the shader's first stage sums: few, so that a BVH spreads over many work
+  // groups (docs/ray-tracer.md "gl").
+  static constexpr GLuint kNodesPerInvocation = 4;
+
 private:
   ShaderProgram program_;
-  GLint job_count_ = -1, node_cost_ = -1, prim_cost_ = -1;
-  GLuint group_size_ = 0;  // the kernel's local_size_x: invocations per BLAS
+  GLint stage_ = -1, nodes_per_invocation_ = -1, groups_per_job_ = -1, node_cost_ = -1, prim_cost_ = -1;
+  GLuint group_size_ = 0;  // the kernel's local_size_x
+  GlBuffer partials_;      // per job and stage-0 work group: two doubles
+  std::size_t partials_capacity_ = 0;  // dvec2s
   GlJobBuffer jobs_;
   std::vector<glm::uvec4> job_scratch_;
   GlBuffer scratch_;  // measure_now's costs, grown as needed
