@@ -7,8 +7,9 @@
 // divided by the root's half area (by 1 where that is 0). The areas are computed operation for
 // operation as the host's, under `precise`, so they are the same floats; only the order of the double
 // sums differs, so the cost agrees with the host's to double rounding.
-// Two stages, a dispatch each, so that the sums spread over the GPU: a BVH of 100k nodes in one work
-// group took about 0.045 ms of a frame on an H200, its invocations looping over a hundred nodes each.
+// Two stages, a dispatch each, so that the sums spread over the GPU: one work group per BVH, its
+// invocations looping over a hundred nodes each, took 0.037 ms of the deforming atrium's frame on an
+// H100 (the `accel_sah` scope; 0.016 ms now: docs/perf.md "Thirteenth round").
 //   stage 0  work group (g, j): nodes [g, g + 1) x nodes_per_invocation x the local size of job j's
 //            BLAS, summed in shared memory into sah_partials[j * groups_per_job + g]
 //   stage 1  work group (0, j): job j's partial sums, its cost
