@@ -157,6 +157,8 @@ void GpuScene::update_mesh_vertices(std::uint32_t mesh, std::span<const vec3> po
   }
   glNamedBufferSubData(vertices_.id(), static_cast<GLintptr>(range.base_vertex * sizeof(GpuVertex)),
                        static_cast<GLsizeiptr>(range.vertex_count * sizeof(GpuVertex)), first);
+  if (vertex_versions_.size() < mesh_range_data_.size()) vertex_versions_.resize(mesh_range_data_.size(), 0);
+  ++vertex_versions_[mesh];
 }
 
 void GpuScene::bind_resources() const {

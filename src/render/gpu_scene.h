@@ -89,6 +89,11 @@ public:
   // Replaces mesh `mesh`'s object-space positions and normals (same count as the mesh has); uvs and
   // indices stay. Throws glint::Error for an unknown mesh or a size mismatch.
   void update_mesh_vertices(std::uint32_t mesh, std::span<const vec3> positions, std::span<const vec3> normals);
+  // How many times update_mesh_vertices replaced mesh `mesh`'s vertices (0 for an unknown mesh):
+  // what caches of a mesh's host-side data (SceneWorldBounds) compare to know they are stale.
+  std::uint64_t vertex_version(std::uint32_t mesh) const {
+    return mesh < vertex_versions_.size() ? vertex_versions_[mesh] : 0;
+  }
 
   // Binds the scene buffers to their SSBO bindings and the texture array to its unit.
   void bind_resources() const;
@@ -122,6 +127,7 @@ private:
 
   std::vector<GpuVertex> vertex_data_;  // CPU mirror: updates rewrite a mesh's range from it
   std::vector<GpuMeshRange> mesh_range_data_;
+  std::vector<std::uint64_t> vertex_versions_;  // per mesh: update_mesh_vertices calls
   std::vector<GpuInstance> instance_data_;
   std::vector<GpuMaterial> material_data_;
   std::vector<DrawElementsIndirectCommand> draw_command_data_;

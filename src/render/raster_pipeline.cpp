@@ -60,9 +60,9 @@ void RasterPipeline::render(const FrameState& frame, GpuTimer* timer, const Rast
 }
 
 void RasterPipeline::render_surfaces(const FrameState& frame, GpuTimer* timer, const RasterShadowSteps& shadow) {
-  // The scene's bounds scan every vertex (deforming meshes move them): once per frame, for both the
-  // camera's clip range and the shadow cube's near distance.
-  const Aabb world_bounds = scene_->world_bounds();
+  // The scene's bounds (deforming meshes move them): once per frame, for both the camera's clip range
+  // and the shadow cube's near distance; only the meshes that can have changed are scanned again.
+  const Aabb world_bounds = world_bounds_.of(*scene_, gpu_scene_);
   frame_constants_ = make_frame_constants(*scene_, world_bounds, frame, targets_.width, targets_.height);
   glNamedBufferSubData(frame_constants_buffer_.id(), 0, sizeof(FrameConstants), &frame_constants_);
   glBindBufferBase(GL_UNIFORM_BUFFER, kFrameConstantsBinding, frame_constants_buffer_.id());

@@ -20,6 +20,7 @@
 #include "render/primary_visibility_choice.h"
 #include "render/raster_settings.h"
 #include "render/raster_targets.h"
+#include "render/scene_world_bounds.h"
 #include "render/shadow_chunks.h"
 #include "render/shadow_cube_pass.h"
 #include "render/shadow_mask_pass.h"
@@ -112,6 +113,7 @@ private:
   RasterTargets targets_;
   GlBuffer frame_constants_buffer_;
   FrameConstants frame_constants_;
+  SceneWorldBounds world_bounds_;
   std::optional<SurfaceMotion> surface_motion_;  // RasterSettings::surface_motion; both G-buffer methods write it
   // One G-buffer method is made, the one RasterSettings::gbuffer names.
   std::optional<GBufferPass> gbuffer_;
