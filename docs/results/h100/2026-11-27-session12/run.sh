@@ -3,8 +3,8 @@
 # are named <step><call>-*. Steps: a (tests, FILTER=), d (the defaults against pinned choices: atrium
 # 1280x720, gl and cuda, static and deforming), s (other scenes and 2560x1440 under the defaults), e
 # (the SSR march before the inline shadow rays, throwaway binaries), q (the gl SAH kernel, old against
-# new), m (the matrix), c (the whole suite). Calls: 1 11:08 UTC H200 (a, d, s), 2 11:12 H200 (e), 3
-# 11:31 H100 (a, q, d, s), 4 H100 (m gl), 5 H100 (m cuda).
+# new), m (the matrix), b (the world bounds cached), c (the whole suite). Calls: 1 11:08 UTC H200 (a, d, s), 2 11:12 H200 (e), 3
+# 11:31 H100 (a, q, d, s), 4 11:33 H100 (m gl), 5 11:35 H100 (m cuda), 6 H100 (b, c).
 set -u
 STEP=$1
 R=/tmp/r-$STEP; rm -rf $R; mkdir -p $R
@@ -89,6 +89,24 @@ if [ "$STEP" = m ]; then
   GLINT=glint timeout 560 bash tools/frame_matrix.sh $R/m --backend ${BACKEND:-gl} > $R/m.log 2>&1; echo "matrix rc=$?"
   rm -f $R/m/*/frame_*.png
   python3 tools/frame_table.py $R/m > $R/matrix.md 2>&1; cat $R/matrix.md
+fi
+# b: the frame's world bounds from cached per-mesh boxes (the tree) against every vertex scanned each
+# frame (prebounds: the binary of calls 3-5); frames where the host may pace the loop (off and ssr with
+# rt shadows) and the defaults; images compared.
+if [ "$STEP" = b ]; then
+  [ -x /tmp/w/glint-prebounds ] || { xz -dc .exp/glint-prebounds.xz > /tmp/w/glint-prebounds; chmod +x /tmp/w/glint-prebounds; }
+  for rep in 1 2; do for v in tree prebounds; do g=glint; [ $v = tree ] || g=/tmp/w/glint-$v
+    for cfg in gl:off:off gl:ssr:off gl:hybrid:off gl:hybrid:on cuda:off:off cuda:hybrid:off cuda:hybrid:on; do IFS=: read be mode deform <<< "$cfg"
+      timeout 90 $g render atrium --backend $be --reflections $mode --width 1280 --height 720 --frames 2071:2110 --timings-only \
+        --deform $deform --out $R/f/$v-$be-$mode-deform-$deform-r$rep > $R/f.log 2>&1 || { echo "$v $cfg failed"; tail -2 $R/f.log; }
+    done
+  done; done
+  python3 tools/frame_table.py $R/f > $R/frames.md 2>&1; cat $R/frames.md
+  for v in tree prebounds; do g=glint; [ $v = tree ] || g=/tmp/w/glint-$v
+    timeout 90 $g render atrium --backend gl --width 1280 --height 720 --frames 2096:2103 --out $R/img-$v > $R/img.log 2>&1 || echo "images $v failed"
+  done
+  n=0; for f in $R/img-tree/frame_*.png; do cmp -s $f $R/img-prebounds/$(basename $f) && n=$((n+1)); done; echo "tree: $n of 8 frames byte-equal to prebounds'"
+  rm -rf $R/img-* $R/f/*/frame_*.png
 fi
 if [ "$STEP" = c ]; then
   ( cd $R && timeout 560 glint_tests --gtest_brief=1 > tests.log 2>&1; echo "tests rc=$?" >> tests.log )
