@@ -53,6 +53,7 @@ GpuScene::GpuScene(const Scene& scene, const GpuSceneOptions& options) {
     index_data.insert(index_data.end(), mesh.indices.begin(), mesh.indices.end());
   }
   checked_u32(index_data.size(), "indices");
+  vertex_versions_.assign(mesh_range_data_.size(), 0);
 
   for (const Material& material : scene.materials) material_data_.push_back(to_gpu(material));
 
@@ -157,7 +158,6 @@ void GpuScene::update_mesh_vertices(std::uint32_t mesh, std::span<const vec3> po
   }
   glNamedBufferSubData(vertices_.id(), static_cast<GLintptr>(range.base_vertex * sizeof(GpuVertex)),
                        static_cast<GLsizeiptr>(range.vertex_count * sizeof(GpuVertex)), first);
-  if (vertex_versions_.size() < mesh_range_data_.size()) vertex_versions_.resize(mesh_range_data_.size(), 0);
   ++vertex_versions_[mesh];
 }
 

@@ -12,9 +12,13 @@ PrimaryVisibility faster_primary_visibility(double raster_ms, double compute_ms)
   return compute_ms * kComputeRasterMargin < raster_ms ? PrimaryVisibility::compute : PrimaryVisibility::raster;
 }
 
-PrimaryVisibilityChoice choose_primary_visibility(std::string_view gl_renderer, const std::function<void()>& id_draw,
+std::optional<PrimaryVisibilityChoice> untimed_primary_visibility(std::string_view gl_renderer) {
+  if (software_gl_renderer(gl_renderer)) return PrimaryVisibilityChoice{};
+  return std::nullopt;
+}
+
+PrimaryVisibilityChoice choose_primary_visibility(const std::function<void()>& id_draw,
                                                   const std::function<void()>& compute_raster) {
-  if (software_gl_renderer(gl_renderer)) return {};
   double raster_ms = std::numeric_limits<double>::infinity();
   double compute_ms = raster_ms;
   // Alternating, so that a clock ramping up or a neighbour's load during the measurement weighs on both.

@@ -40,12 +40,16 @@ inline constexpr int kPrimaryVisibilityTimedRuns = 2;
 // The rule on two measured times: compute when compute_ms x kComputeRasterMargin < raster_ms.
 PrimaryVisibility faster_primary_visibility(double raster_ms, double compute_ms);
 
-// The choice on the current GL context, whose GL_RENDERER is `gl_renderer`: a software renderer
-// (software_gl_renderer) keeps the id draw without running anything; otherwise `id_draw` and
-// `compute_raster` run alternately, kPrimaryVisibilityTimedRuns times each, timed by GL time queries
-// (none may be active), and faster_primary_visibility decides. Each candidate must write a complete
-// id image, so the caller may run the winner again or keep what it wrote.
-PrimaryVisibilityChoice choose_primary_visibility(std::string_view gl_renderer, const std::function<void()>& id_draw,
+// The choice made without timing anything: the id draw on a software renderer (`gl_renderer`, a
+// GL_RENDERER string, that software_gl_renderer names); nullopt on a GPU, where
+// choose_primary_visibility times both.
+std::optional<PrimaryVisibilityChoice> untimed_primary_visibility(std::string_view gl_renderer);
+
+// The choice on a GPU: `id_draw` and `compute_raster` run alternately, kPrimaryVisibilityTimedRuns
+// times each, timed by GL time queries (none may be active), and faster_primary_visibility decides.
+// Each candidate must write a complete id image, so the caller may run the winner again or keep what
+// it wrote.
+PrimaryVisibilityChoice choose_primary_visibility(const std::function<void()>& id_draw,
                                                   const std::function<void()>& compute_raster);
 
 }  // namespace glint::render

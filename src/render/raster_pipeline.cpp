@@ -41,8 +41,8 @@ RasterPipeline::RasterPipeline(const Scene& scene, int width, int height, const 
   if (settings_.gbuffer == GBufferMethod::visibility) {
     // automatic: a software renderer keeps the id draw untimed; elsewhere both are made and the first
     // frame times them and drops the slower (primary_visibility_choice.h).
-    if (settings_.primary == PrimaryVisibility::automatic && software_gl_renderer(current_gl_renderer()))
-      primary_choice_ = PrimaryVisibilityChoice{};
+    if (settings_.primary == PrimaryVisibility::automatic)
+      primary_choice_ = untimed_primary_visibility(current_gl_renderer());
     const PrimaryVisibility primary = primary_visibility();
     if (primary == PrimaryVisibility::raster || primary == PrimaryVisibility::automatic) visibility_ids_.emplace(targets_);
     if (primary == PrimaryVisibility::compute || primary == PrimaryVisibility::automatic)
@@ -97,8 +97,8 @@ void RasterPipeline::render_surfaces(const FrameState& frame, GpuTimer* timer, c
 }
 
 void RasterPipeline::choose_primary_visibility() {
-  primary_choice_ = render::choose_primary_visibility(
-      current_gl_renderer(), [&] { visibility_ids_->run(gpu_scene_); }, [&] { compute_visibility_->run(); });
+  primary_choice_ = render::choose_primary_visibility([&] { visibility_ids_->run(gpu_scene_); },
+                                                      [&] { compute_visibility_->run(); });
   if (primary_choice_->method == PrimaryVisibility::compute)
     visibility_ids_.reset();
   else

@@ -51,6 +51,11 @@ TEST(PrimaryVisibilityRule, AutoIsAName) {
   EXPECT_EQ(primary_visibility_name(PrimaryVisibility::automatic), "auto");
 }
 
+TEST(PrimaryVisibilityRule, OnlySoftwareRenderersChooseUntimed) {
+  EXPECT_TRUE(untimed_primary_visibility("llvmpipe (LLVM 15.0.6, 256 bits)").has_value());
+  EXPECT_FALSE(untimed_primary_visibility("NVIDIA H100 80GB HBM3/PCIe/SSE2").has_value());
+}
+
 TEST(GlRenderer, SoftwareRenderersAreMesasRasterisers) {
   EXPECT_TRUE(software_gl_renderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
   EXPECT_TRUE(software_gl_renderer("softpipe"));
@@ -60,13 +65,11 @@ TEST(GlRenderer, SoftwareRenderersAreMesasRasterisers) {
 
 TEST_F(PrimaryVisibilityChoiceTest, SoftwareRendererKeepsTheIdDrawUntimed) {
   if (!software_gl_renderer(current_gl_renderer())) GTEST_SKIP() << "a GPU times both (the next test)";
-  int runs = 0;
-  const PrimaryVisibilityChoice choice =
-      choose_primary_visibility(current_gl_renderer(), [&] { ++runs; }, [&] { ++runs; });
-  EXPECT_EQ(runs, 0);
-  EXPECT_EQ(choice.method, PrimaryVisibility::raster);
-  EXPECT_FALSE(choice.raster_ms.has_value());
-  EXPECT_FALSE(choice.compute_ms.has_value());
+  const std::optional<PrimaryVisibilityChoice> choice = untimed_primary_visibility(current_gl_renderer());
+  ASSERT_TRUE(choice.has_value());
+  EXPECT_EQ(choice->method, PrimaryVisibility::raster);
+  EXPECT_FALSE(choice->raster_ms.has_value());
+  EXPECT_FALSE(choice->compute_ms.has_value());
 
   const Scene scene = testing::mirror_floor_with_wall(-4.0f);
   const FrameState state = testing::camera_looking_down_the_floor();
